@@ -1,0 +1,209 @@
+//! [`ForceExtension`]: the one output type of every model in hockle.
+//!
+//! A curve is a sequence of equilibria in the order a model produced them
+//! (along a branch, or along a continuation run), each with its physical
+//! force, its extension and the parameter that generated it (the modulus k
+//! for an elastica branch, the helix angle θ for a helix, the arclength for a
+//! continuation run).
+
+use std::io;
+
+use crate::error::{Error, Result};
+
+/// One equilibrium on a force–extension curve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct ForcePoint {
+    /// End-to-end distance along the force per unit length, Δz ∈ [−1, 1].
+    pub extension: f64,
+    /// Physical tension F = dU/dΔz in units of B/L² (positive when pulling).
+    pub force: f64,
+    /// The parameter that generated the point (k, θ, arclength, …: see the
+    /// curve's [`ForceExtension::parameter_name`]).
+    pub parameter: f64,
+}
+
+/// A force–extension curve: equilibria in order, with the scale of the
+/// paper's plots.
+///
+/// `force_scaled = force / (2π n_scale)²`, where `n_scale` is the number of
+/// coils used for scaling (the paper scales every figure by n = 4).
+///
+/// ```
+/// use hockle::{ForceExtension, ForcePoint};
+/// let mut curve = ForceExtension::new("demo", "k", 4)?;
+/// curve.push(ForcePoint { extension: 0.1, force: 2.0, parameter: 0.5 });
+/// assert_eq!(curve.len(), 1);
+/// let scale = (2.0 * std::f64::consts::PI * 4.0).powi(2);
+/// assert_eq!(curve.force_scaled(0), Some(2.0 / scale));
+/// # Ok::<(), hockle::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct ForceExtension {
+    label: String,
+    parameter_name: String,
+    scale_coils: u32,
+    points: Vec<ForcePoint>,
+}
+
+impl ForceExtension {
+    /// An empty curve named `label`, whose points carry `parameter_name` as
+    /// their parameter, scaled by `(2π scale_coils)²`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidCount`] if `scale_coils` is 0.
+    pub fn new(
+        label: impl Into<String>,
+        parameter_name: impl Into<String>,
+        scale_coils: u32,
+    ) -> Result<Self> {
+        if scale_coils == 0 {
+            return Err(Error::InvalidCount {
+                name: "scale_coils",
+                value: 0,
+                allowed: "at least 1 coil",
+            });
+        }
+        Ok(Self {
+            label: label.into(),
+            parameter_name: parameter_name.into(),
+            scale_coils,
+            points: Vec::new(),
+        })
+    }
+
+    /// Appends a point at the end of the curve.
+    pub fn push(&mut self, point: ForcePoint) {
+        self.points.push(point);
+    }
+
+    /// What the curve is (a branch name, a model name).
+    #[must_use]
+    pub fn label(&self) -> &str {
+        &self.label
+    }
+
+    /// The name of the points' parameter (`"k"`, `"theta"`, `"arclength"`, …).
+    #[must_use]
+    pub fn parameter_name(&self) -> &str {
+        &self.parameter_name
+    }
+
+    /// The number of coils n whose (2πn)² scales [`Self::force_scaled`].
+    #[must_use]
+    pub fn scale_coils(&self) -> u32 {
+        self.scale_coils
+    }
+
+    /// The scale (2πn)² that divides the force in the paper's plots.
+    #[must_use]
+    pub fn force_scale(&self) -> f64 {
+        let two_pi_n = 2.0 * std::f64::consts::PI * f64::from(self.scale_coils);
+        two_pi_n * two_pi_n
+    }
+
+    /// The points, in order.
+    #[must_use]
+    pub fn points(&self) -> &[ForcePoint] {
+        &self.points
+    }
+
+    /// The number of points.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.points.len()
+    }
+
+    /// Whether the curve has no points.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.points.is_empty()
+    }
+
+    /// The force of point `i` divided by (2πn)², or `None` past the end.
+    #[must_use]
+    pub fn force_scaled(&self, i: usize) -> Option<f64> {
+        self.points.get(i).map(|p| p.force / self.force_scale())
+    }
+
+    /// Writes the curve as CSV with the header
+    /// `extension,force,force_scaled,parameter`, one row per point in order,
+    /// numbers in Rust's shortest round-trip form.
+    ///
+    /// # Errors
+    /// Any error of the writer.
+    pub fn write_csv<W: io::Write>(&self, mut out: W) -> io::Result<()> {
+        writeln!(out, "extension,force,force_scaled,{}", self.parameter_name)?;
+        let scale = self.force_scale();
+        for p in &self.points {
+            writeln!(
+                out,
+                "{:e},{:e},{:e},{:e}",
+                p.extension,
+                p.force,
+                p.force / scale,
+                p.parameter
+            )?;
+        }
+        Ok(())
+    }
+}
+
+impl Extend<ForcePoint> for ForceExtension {
+    fn extend<I: IntoIterator<Item = ForcePoint>>(&mut self, iter: I) {
+        self.points.extend(iter);
+    }
+}
+
+impl core::fmt::Display for ForceExtension {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(
+            f,
+            "{} ({} points over {}, force scaled by (2π·{})²)",
+            self.label,
+            self.points.len(),
+            self.parameter_name,
+            self.scale_coils
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn csv_round_trips_every_number() {
+        let mut c = ForceExtension::new("t", "k", 1).unwrap();
+        c.push(ForcePoint {
+            extension: 0.1,
+            force: 1.0 / 3.0,
+            parameter: 0.7,
+        });
+        let mut buf = Vec::new();
+        c.write_csv(&mut buf).unwrap();
+        let text = String::from_utf8(buf).unwrap();
+        let row: Vec<f64> = text
+            .lines()
+            .nth(1)
+            .unwrap()
+            .split(',')
+            .map(|x| x.parse().unwrap())
+            .collect();
+        assert_eq!(row[0], 0.1);
+        assert_eq!(row[1], 1.0 / 3.0);
+        assert_eq!(row[3], 0.7);
+    }
+
+    #[test]
+    fn zero_scale_coils_is_an_error() {
+        assert!(matches!(
+            ForceExtension::new("t", "k", 0),
+            Err(Error::InvalidCount {
+                name: "scale_coils",
+                ..
+            })
+        ));
+    }
+}

@@ -1,0 +1,64 @@
+//! # hockle
+//!
+//! Mechanics of coiled elastic rods — springs, ribbons, cables and nanocoils
+//! pulled until their loops pop out — after Starostin & van der Heijden,
+//! *Cascade unlooping of a low-pitch helical spring under tension*,
+//! J. Mech. Phys. Solids 57 (2009).
+//!
+//! ## Layers
+//!
+//! Lower layers never import higher ones.
+//!
+//! | module | what it does |
+//! |---|---|
+//! | [`special`] | Jacobi elliptic functions and elliptic integrals |
+//! | [`elastica`] | planar elastica with intrinsic curvature: υ, α, ϑ and secondary branches |
+//! | [`helix`] | closed-form helical response (the paper's Appendix) |
+//! | [`bvp`] | Gauss–Legendre collocation boundary-value solver |
+//! | [`continuation`] | pseudo-arclength continuation with fold and branch-point detection |
+//! | [`rod`] | the 3D anisotropic Kirchhoff rod with zero-moment ends |
+//! | [`spring`] | the scene: one spring, answered by every model with a [`ForceExtension`] |
+//! | [`curve`] | [`ForceExtension`], the one output type of every model |
+//!
+//! ## Conventions
+//!
+//! - **Units.** Rod length 1 and bending stiffness B = 1 unless given: forces
+//!   are in units of B/L², moments in B/L.
+//! - **Force** is the physical tension that balances the end load, positive
+//!   when pulling: F = dU/dΔz. The paper's elastica formulas (eq4 onwards)
+//!   write a constant that is twice this: from eq2/eq3 with B = 1 the energy
+//!   derivative gives F = k²Ω², not the printed 2k²Ω². Every `force()` in
+//!   hockle is the physical one; `force_scaled()` is F/(2πn)², the scale of
+//!   the paper's plots.
+//! - **Extension** Δz is the end-to-end distance along the force per unit
+//!   length, Δz ∈ [−1, 1].
+//! - **Modulus.** k is the modulus, m = k² the parameter, m₁ = 1 − m the
+//!   complementary parameter; [`special::Modulus`] holds all three exactly so
+//!   that k → 1 loses nothing.
+//! - **Angles** are in radians. The helix angle θ is the angle between the
+//!   tangent and the helix axis (θ0 = 89.8° is a pitch angle of 0.2°).
+//! - **Stiffness.** A about d1, B about d2, C in torsion.
+//!
+//! ## Errors
+//!
+//! Bad input never panics: every fallible function returns [`Result`] with an
+//! [`Error`] that names the offending value and what is allowed.
+#![forbid(unsafe_code)]
+#![deny(missing_docs)]
+
+pub use nalgebra;
+
+pub mod bvp;
+pub mod continuation;
+pub mod curve;
+pub mod elastica;
+pub mod error;
+pub mod helix;
+pub mod rod;
+pub mod special;
+pub mod spring;
+
+pub(crate) mod linalg;
+
+pub use curve::{ForceExtension, ForcePoint};
+pub use error::{Error, Result};
