@@ -36,20 +36,63 @@ fn reduce_pi_sin_cos(phi: f64) -> (f64, f64, f64, f64) {
     (j, r, s, c)
 }
 
-/// F and E on 0 ≤ r ≤ π/2 from sin r, cos r (c = cos r ≥ 0).
+/// F and E on 0 ≤ r ≤ π/2 from s = sin r, c = cos r ≥ 0, without folding.
 ///
 /// ```text
 /// Δ² = c² + m₁ s²                        (never 1 − m s², which cancels)
 /// F  = s R_F(c², Δ², 1)                  DLMF 19.25.5
 /// E  = m₁ F + (m m₁/3) s³ R_D(c², 1, Δ²) + m s c / Δ      DLMF 19.25.9
 /// ```
-pub(crate) fn f_e_reduced(s: f64, c: f64, modulus: Modulus) -> (f64, f64) {
-    let (m, mc) = (modulus.m(), modulus.complement());
+fn f_direct(s: f64, c: f64, mc: f64) -> f64 {
+    let c2 = c * c;
+    s * rf(c2, c2 + mc * s * s, 1.0)
+}
+
+fn e_direct(s: f64, c: f64, f: f64, m: f64, mc: f64) -> f64 {
     let c2 = c * c;
     let d2 = c2 + mc * s * s;
-    let f = s * rf(c2, d2, 1.0);
-    let e = mc * f + m * mc / 3.0 * s * s * s * rd(c2, 1.0, d2) + m * s * c / d2.sqrt();
-    (f, e)
+    mc * f + m * mc / 3.0 * s * s * s * rd(c2, 1.0, d2) + m * s * c / d2.sqrt()
+}
+
+/// Near π/2 (c² < m₁ s²/4) the complementary amplitude ψ, tan ψ = cot r / k′
+/// (DLMF 19.11.2 with ψ + r "adding up" to K), is small:
+///
+/// ```text
+/// sin ψ = c/Δ,  cos ψ = k′ s/Δ,  F(r) = K − F(ψ),  E(r) = E − E(ψ) + m s sin ψ
+/// ```
+/// so E(r) near E is the complete E minus a small correction instead of an
+/// R_D term of size ~1 (its ~2-ulp error would show, as r → π/2 and m → 1
+/// leave E(r) with condition number ~0).
+fn folds(s: f64, c: f64, mc: f64) -> bool {
+    c * c < 0.25 * mc * (s * s)
+}
+
+fn psi(s: f64, c: f64, mc: f64) -> (f64, f64) {
+    let d = (c * c + mc * s * s).sqrt();
+    (c / d, mc.sqrt() * s / d)
+}
+
+/// F on 0 ≤ r ≤ π/2 from sin r, cos r ≥ 0.
+pub(crate) fn f_reduced(s: f64, c: f64, modulus: Modulus) -> f64 {
+    let mc = modulus.complement();
+    if folds(s, c, mc) {
+        let (sp, cp) = psi(s, c, mc);
+        ellip_k(modulus) - f_direct(sp, cp, mc)
+    } else {
+        f_direct(s, c, mc)
+    }
+}
+
+/// E on 0 ≤ r ≤ π/2 from sin r, cos r ≥ 0.
+pub(crate) fn e_reduced(s: f64, c: f64, modulus: Modulus) -> f64 {
+    let (m, mc) = (modulus.m(), modulus.complement());
+    if folds(s, c, mc) {
+        let (sp, cp) = psi(s, c, mc);
+        let ep = e_direct(sp, cp, f_direct(sp, cp, mc), m, mc);
+        (ellip_e(modulus) - ep) + m * s * sp
+    } else {
+        e_direct(s, c, f_direct(s, c, mc), m, mc)
+    }
 }
 
 /// Incomplete elliptic integral of the first kind F(φ, k), any real φ.
@@ -84,7 +127,7 @@ pub fn ellip_f(phi: f64, modulus: Modulus) -> f64 {
         return f64::NAN;
     }
     let (j, r, s, c) = reduce_pi_sin_cos(phi);
-    let f = f_e_reduced(s, c, modulus).0.copysign(r);
+    let f = f_reduced(s, c, modulus).copysign(r);
     if j == 0.0 {
         f
     } else {
@@ -123,7 +166,7 @@ pub fn ellip_e_inc(phi: f64, modulus: Modulus) -> f64 {
         return f64::NAN;
     }
     let (j, r, s, c) = reduce_pi_sin_cos(phi);
-    let e = f_e_reduced(s, c, modulus).1.copysign(r);
+    let e = e_reduced(s, c, modulus).copysign(r);
     if j == 0.0 {
         e
     } else {

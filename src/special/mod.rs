@@ -31,11 +31,13 @@
 //! the functions are total: a NaN or infinite φ or u gives NaN.
 
 mod carlson;
+mod coeffs;
 mod complete;
 mod epsilon;
 mod incomplete;
 mod jacobi;
 mod modulus;
+mod poly;
 
 pub use complete::{ellip_e, ellip_k};
 pub use epsilon::{jacobi_epsilon, jacobi_zeta};
