@@ -1,7 +1,7 @@
 //! Incomplete elliptic integrals F(φ, k) and E(φ, k) for any real φ.
 
 use super::Modulus;
-use super::carlson::{rd, rf};
+use super::carlson::{rf, rf_rd};
 use super::complete::{ellip_e, ellip_k};
 
 /// π split as a double-double: `PI_HI + PI_LO` = π to ~1e-32.
@@ -48,10 +48,11 @@ fn f_direct(s: f64, c: f64, mc: f64) -> f64 {
     s * rf(c2, c2 + mc * s * s, 1.0)
 }
 
-fn e_direct(s: f64, c: f64, f: f64, m: f64, mc: f64) -> f64 {
+fn e_direct(s: f64, c: f64, m: f64, mc: f64) -> f64 {
     let c2 = c * c;
     let d2 = c2 + mc * s * s;
-    mc * f + m * mc / 3.0 * s * s * s * rd(c2, 1.0, d2) + m * s * c / d2.sqrt()
+    let (rf, rd) = rf_rd(c2, 1.0, d2);
+    mc * (s * rf) + m * mc / 3.0 * s * s * s * rd + m * s * c / d2.sqrt()
 }
 
 /// Near π/2 (c² < m₁ s²/4) the complementary amplitude ψ, tan ψ = cot r / k′
@@ -88,10 +89,10 @@ pub(crate) fn e_reduced(s: f64, c: f64, modulus: Modulus) -> f64 {
     let (m, mc) = (modulus.m(), modulus.complement());
     if folds(s, c, mc) {
         let (sp, cp) = psi(s, c, mc);
-        let ep = e_direct(sp, cp, f_direct(sp, cp, mc), m, mc);
+        let ep = e_direct(sp, cp, m, mc);
         (ellip_e(modulus) - ep) + m * s * sp
     } else {
-        e_direct(s, c, f_direct(s, c, mc), m, mc)
+        e_direct(s, c, m, mc)
     }
 }
 

@@ -31,6 +31,7 @@
 //! the functions are total: a NaN or infinite φ or u gives NaN.
 
 mod carlson;
+mod carlson_series;
 mod coeffs;
 mod complete;
 mod epsilon;
