@@ -4,6 +4,7 @@
 Regenerate (deterministic, about a minute):
 
     python3 tests/data/gen_elastica.py tests/data
+    python3 tests/data/gen_elastica.py tests/data --only-helix   # helix.csv alone
 
 Everything here is derived and solved independently of the Rust code:
 
@@ -342,11 +343,13 @@ def helix_rows():
     twist rate of the frame about the axis (free: zero axial moment), Delta z = cos t;
     F = dU*/d(Delta z) with U* = min over rho.
     """
-    rows = ["n,theta0_deg,a_over_b,nu,theta,force,extension,radius"]
+    rows = ["n,theta0_deg,theta0,a_over_b,nu,theta,force,extension,radius"]
     n = 4
     nu = mpf(float("0.05"))
     for th0d in ("89.8", "89.5", "89", "88", "60"):
-        th0 = radians(mpf(float(th0d)))
+        # theta0 and theta are exact doubles (printed with 17 digits) so that the
+        # Rust side evaluates at the very same arguments
+        th0 = mpf(float(radians(mpf(float(th0d)))))
         for ab in ("10", "1", "0.1"):
             A, B = mpf(float(ab)), mpf(1)
             C = 2 * A * B / ((1 + nu) * (A + B))
@@ -359,13 +362,13 @@ def helix_rows():
                 return (B * (r * sin(t) - k0) ** 2 + C * (r * cos(t) - t0) ** 2) / 2, r
 
             for frac in ("1", "0.999", "0.99", "0.9", "0.7", "0.5", "0.3", "0.1", "1.001"):
-                t = th0 * mpf(float(frac))
+                t = mpf(float(th0 * mpf(float(frac))))
                 if t >= pi / 2 + mpf(10) ** -30 and frac == "1.001":
                     continue
                 dudt = diff(lambda x: ustar(x)[0], t)
                 force = -dudt / sin(t)
                 r = ustar(t)[1]
-                rows.append(",".join([str(n), th0d, ab, "0.05", fmt(t), fmt(force), fmt(cos(t)), fmt(sin(t) / r)]))
+                rows.append(",".join([str(n), th0d, repr(float(th0)), ab, "0.05", repr(float(t)), fmt(force), fmt(cos(t)), fmt(sin(t) / r)]))
     return rows
 
 
@@ -402,6 +405,9 @@ def write(name, lines):
 
 
 if __name__ == "__main__":
+    if len(sys.argv) > 2 and sys.argv[2] == "--only-helix":
+        write("helix.csv", helix_rows())
+        sys.exit(0)
     check_primary()
     write("elastica_primary.csv", gen_primary())
     write("elastica_theta.csv", gen_theta())
