@@ -33,7 +33,15 @@ pub enum Error {
         allowed: &'static str,
     },
     // ----- special -------------------------------------------------------
-
+    /// A modulus k, parameter m or complementary parameter m1 is NaN or
+    /// outside [0, 1].
+    #[error("{name} = {value} is not a valid elliptic modulus: {name} must lie in [0, 1]")]
+    InvalidModulus {
+        /// Which argument: `"k"`, `"m"` or `"m1"`.
+        name: &'static str,
+        /// The value that was given.
+        value: f64,
+    },
     // ----- elastica, helix -----------------------------------------------
 
     // ----- bvp -----------------------------------------------------------
