@@ -85,7 +85,7 @@ impl Model for HelixModel {
 /// bisection (F grows without bound as θ → 0).
 fn angle_at_force(helix: &Helix, force: f64) -> Result<f64> {
     let (mut lo, mut hi) = (0.0_f64, helix.theta0());
-    while lo.next_up() < hi {
+    loop {
         let mid = 0.5 * (lo + hi);
         if mid <= lo || mid >= hi {
             break;

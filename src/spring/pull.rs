@@ -407,7 +407,7 @@ fn parabola_vertex(
     let (ta, tb, tc) = (a.parameter, b.parameter, c.parameter);
     let (ya, yb, yc) = (get(a), get(b), get(c));
     let denom = (ta - tb) * (ta - tc) * (tb - tc);
-    if !(denom.abs() > 0.0) {
+    if denom == 0.0 || denom.is_nan() {
         return *b;
     }
     let num = ta * ta * (yb - yc) + tb * tb * (yc - ya) + tc * tc * (ya - yb);
