@@ -1,3 +1,59 @@
-//! The scene: a spring, answered by every model with a [`crate::ForceExtension`].
+//! The scene: one [`Spring`], answered by every model with a [`Pull`] whose
+//! curve is a [`ForceExtension`].
 //!
-//! Not yet implemented: see `docs/ROADMAP.md`.
+//! A user describes the spring once and picks the cheapest model the
+//! question needs:
+//!
+//! | model | what it assumes | cost |
+//! |---|---|---|
+//! | [`HelixModel`] | the spring stays an exact helix (the paper's Appendix) | microseconds |
+//!
+//! Every model implements [`Model`]; a [`Pull`] gives the curve, its folds,
+//! the pop-outs, the stretches between them, their loop counts and the
+//! jumps under force or displacement control.
+//!
+//! ```
+//! use hockle::spring::{HelixModel, Model, Spring};
+//! let spring = Spring::paper();
+//! let pull = HelixModel::default().pull(&spring, 0.5)?; // up to F/(2πn)² = 0.5
+//! let last = pull.curve().points().last().unwrap();
+//! assert!((last.force / spring.force_scale() - 0.5).abs() < 1e-9);
+//! assert!(pull.pop_outs().is_empty()); // a helix never pops a loop
+//! # Ok::<(), hockle::Error>(())
+//! ```
+
+mod helix_model;
+mod pull;
+mod scene;
+
+pub use helix_model::HelixModel;
+pub use pull::{BranchMatch, Control, Direction, Fold, FoldKind, Jump, PopOut, Pull, Stretch};
+pub use scene::Spring;
+
+use crate::error::Result;
+
+/// A model of a pulled spring: answers [`Spring`]s with [`Pull`]s.
+pub trait Model {
+    /// A short name for tables and labels.
+    fn name(&self) -> &str;
+
+    /// Pulls `spring` from rest until the force reaches
+    /// `max_force_scaled`·(2πn)²B (the paper pulls to 3).
+    ///
+    /// # Errors
+    /// If the model cannot represent the spring, or `max_force_scaled` is not
+    /// positive and finite; each model documents its own.
+    fn pull(&self, spring: &Spring, max_force_scaled: f64) -> Result<Pull>;
+}
+
+pub(crate) fn check_target(max_force_scaled: f64) -> Result<f64> {
+    if max_force_scaled.is_finite() && max_force_scaled > 0.0 {
+        Ok(max_force_scaled)
+    } else {
+        Err(crate::Error::InvalidArgument {
+            name: "max_force_scaled",
+            value: max_force_scaled,
+            allowed: "a positive, finite force in units of (2πn)²B",
+        })
+    }
+}

@@ -1,0 +1,100 @@
+//! [`HelixModel`]: the spring stays an exact helix (the paper's Appendix).
+
+use crate::curve::{ForceExtension, ForcePoint};
+use crate::error::{Error, Result};
+use crate::helix::Helix;
+
+use super::{Model, Pull, Spring, check_target};
+
+/// The spring as an exact helix with zero axial moment throughout
+/// ([`crate::helix`]): instant, exact for θ0 far from 90° and for isotropic
+/// or slinky rods, blind to pop-outs.
+///
+/// The curve is sampled uniformly in extension from the rest state
+/// Δz = cos θ0 to the extension at which the force reaches the target.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct HelixModel {
+    samples: usize,
+}
+
+impl Default for HelixModel {
+    /// 200 samples.
+    fn default() -> Self {
+        Self { samples: 200 }
+    }
+}
+
+impl HelixModel {
+    /// A helix model sampling its curve at `samples` points.
+    ///
+    /// # Errors
+    /// [`Error::InvalidCount`] if `samples < 2`.
+    pub fn new(samples: usize) -> Result<Self> {
+        if samples < 2 {
+            return Err(Error::InvalidCount {
+                name: "samples",
+                value: samples as u64,
+                allowed: "at least 2 points",
+            });
+        }
+        Ok(Self { samples })
+    }
+}
+
+impl Model for HelixModel {
+    fn name(&self) -> &str {
+        "helix"
+    }
+
+    /// # Errors
+    /// [`Error::InvalidArgument`] for a bad target, or if the spring's
+    /// intrinsic strains are not those of its helix (the model assumes them).
+    fn pull(&self, spring: &Spring, max_force_scaled: f64) -> Result<Pull> {
+        let target = check_target(max_force_scaled)? * spring.force_scale();
+        if !spring.is_helical() {
+            return Err(Error::InvalidArgument {
+                name: "u10",
+                value: spring.intrinsic_strains().x,
+                allowed: "the helix model needs the intrinsic strains of the unstressed helix",
+            });
+        }
+        let helix = Helix::new(spring.coils(), spring.helix_angle(), spring.stiffness())?;
+        let theta_end = angle_at_force(&helix, target)?;
+        let (z0, z1) = (spring.helix_angle().cos(), theta_end.cos());
+        let mut curve = ForceExtension::new(self.name(), "theta", spring.coils())?;
+        for i in 0..self.samples {
+            let t = i as f64 / (self.samples - 1) as f64;
+            let theta = if i == 0 {
+                spring.helix_angle()
+            } else if i + 1 == self.samples {
+                theta_end
+            } else {
+                (z0 + t * (z1 - z0)).acos()
+            };
+            curve.push(ForcePoint {
+                extension: helix.extension(theta)?,
+                force: helix.force(theta)?,
+                parameter: theta,
+            });
+        }
+        Ok(Pull::from_curve(self.name(), curve))
+    }
+}
+
+/// The helix angle θ ∈ (0, θ0) at which the helix carries `force`, by
+/// bisection (F grows without bound as θ → 0).
+fn angle_at_force(helix: &Helix, force: f64) -> Result<f64> {
+    let (mut lo, mut hi) = (0.0_f64, helix.theta0());
+    loop {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if helix.force(mid)? > force {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Ok(hi)
+}

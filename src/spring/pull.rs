@@ -1,0 +1,521 @@
+//! [`Pull`]: a model's answer to "pull this spring", and what can be read
+//! off it: folds, pop-outs, stretches between them, the loop count on each,
+//! the elastica branch each follows, and the jumps (hysteresis) under force
+//! or displacement control.
+//!
+//! Everything here is computed from the curve itself, so it means the same
+//! for every model.
+
+use core::ops::Range;
+
+use crate::curve::{ForceExtension, ForcePoint};
+
+/// Which quantity the testing machine controls.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum Control {
+    /// The force is prescribed: the spring jumps at folds in force.
+    Force,
+    /// The end-to-end distance is prescribed: the spring jumps at folds in
+    /// extension.
+    Extension,
+}
+
+/// Loading (the controlled quantity increases) or unloading.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum Direction {
+    /// The controlled quantity increases.
+    Loading,
+    /// The controlled quantity decreases.
+    Unloading,
+}
+
+/// What turns at a fold.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum FoldKind {
+    /// A local maximum of the force along the curve (a pop-out starts).
+    MaxForce,
+    /// A local minimum of the force along the curve (a pop-out ends).
+    MinForce,
+    /// A local maximum of the extension along the curve.
+    MaxExtension,
+    /// A local minimum of the extension along the curve.
+    MinExtension,
+}
+
+/// A turning point of force or extension along the curve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Fold {
+    /// What turns.
+    pub kind: FoldKind,
+    /// The index of the curve point nearest the fold.
+    pub index: usize,
+    /// The fold itself (located between curve points where the model could).
+    pub point: ForcePoint,
+}
+
+/// A loop popping out: a maximum-force fold followed by a minimum-force fold.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct PopOut {
+    /// Where the force peaks before the loop pops out.
+    pub max: Fold,
+    /// Where the force bottoms out after it.
+    pub min: Fold,
+}
+
+/// A jump of the spring between two equilibria with the same value of the
+/// controlled quantity.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Jump {
+    /// The controlled quantity.
+    pub control: Control,
+    /// Loading or unloading.
+    pub direction: Direction,
+    /// The fold the spring leaves.
+    pub from: Fold,
+    /// Where it lands (interpolated on the curve).
+    pub to: ForcePoint,
+    /// The index of the first curve point past the landing point.
+    pub to_index: usize,
+}
+
+/// A piece of the curve between pop-outs (from the start or a
+/// minimum-force fold to the next maximum-force fold or the end).
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Stretch {
+    /// The curve points it covers.
+    pub range: Range<usize>,
+    /// The number of loops on it (the most common count of its points),
+    /// where the model counts loops.
+    pub loops: Option<u32>,
+}
+
+/// How close a stretch lies to a reference branch (an elastica branch):
+/// distances in the (Δz, F/(2πn)²) plane of the paper's plots.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct BranchMatch {
+    /// The branch's label.
+    pub label: String,
+    /// Root-mean-square distance of the stretch's points from the branch.
+    pub rms_distance: f64,
+    /// Largest distance of a stretch point from the branch.
+    pub max_distance: f64,
+}
+
+/// A model's answer to a pull: the force–extension curve in the order the
+/// model traced it, its folds, and (where the model counts them) the loops
+/// at every point.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Pull {
+    model: String,
+    curve: ForceExtension,
+    folds: Vec<Fold>,
+    loops: Option<Vec<u32>>,
+}
+
+impl Pull {
+    /// A pull whose folds are found on the curve itself: local extrema of
+    /// force and of extension, each refined by the parabola through the
+    /// three points around it.
+    #[must_use]
+    pub fn from_curve(model: impl Into<String>, curve: ForceExtension) -> Self {
+        let folds = detect_folds(curve.points());
+        Self {
+            model: model.into(),
+            curve,
+            folds,
+            loops: None,
+        }
+    }
+
+    /// A pull whose folds the model located itself (e.g. by continuation).
+    #[must_use]
+    pub fn with_folds(
+        model: impl Into<String>,
+        curve: ForceExtension,
+        mut folds: Vec<Fold>,
+    ) -> Self {
+        folds.sort_by_key(|f| f.index);
+        Self {
+            model: model.into(),
+            curve,
+            folds,
+            loops: None,
+        }
+    }
+
+    /// The same pull with a loop count for every curve point.
+    ///
+    /// Counts are ignored (the pull keeps none) unless there is one per point.
+    #[must_use]
+    pub fn with_loops(mut self, loops: Vec<u32>) -> Self {
+        if loops.len() == self.curve.len() {
+            self.loops = Some(loops);
+        }
+        self
+    }
+
+    /// The model that answered.
+    #[must_use]
+    pub fn model(&self) -> &str {
+        &self.model
+    }
+
+    /// The force–extension curve.
+    #[must_use]
+    pub fn curve(&self) -> &ForceExtension {
+        &self.curve
+    }
+
+    /// Every fold in curve order.
+    #[must_use]
+    pub fn folds(&self) -> &[Fold] {
+        &self.folds
+    }
+
+    /// The loop count at every curve point, where the model counts loops.
+    #[must_use]
+    pub fn loops(&self) -> Option<&[u32]> {
+        self.loops.as_deref()
+    }
+
+    /// The pop-outs: each maximum-force fold paired with the next
+    /// minimum-force fold.
+    #[must_use]
+    pub fn pop_outs(&self) -> Vec<PopOut> {
+        let mut out = Vec::new();
+        let mut pending: Option<Fold> = None;
+        for fold in &self.folds {
+            match fold.kind {
+                FoldKind::MaxForce => pending = Some(*fold),
+                FoldKind::MinForce => {
+                    if let Some(max) = pending.take() {
+                        out.push(PopOut { max, min: *fold });
+                    }
+                }
+                FoldKind::MaxExtension | FoldKind::MinExtension => {}
+            }
+        }
+        out
+    }
+
+    /// The stretches between pop-outs, with their loop counts.
+    #[must_use]
+    pub fn stretches(&self) -> Vec<Stretch> {
+        let mut cuts = vec![0];
+        for p in self.pop_outs() {
+            cuts.push(p.max.index + 1);
+            cuts.push(p.min.index);
+        }
+        cuts.push(self.curve.len());
+        cuts.chunks(2)
+            .filter(|c| c[0] < c[1])
+            .map(|c| Stretch {
+                range: c[0]..c[1],
+                loops: self.loops.as_ref().and_then(|l| mode(&l[c[0]..c[1]])),
+            })
+            .collect()
+    }
+
+    /// The jumps a quasi-static test makes under `control`, loading from the
+    /// first point and unloading from the last.
+    ///
+    /// Loading follows the curve until the controlled quantity turns back
+    /// (a fold), then jumps forward to the first later point where the curve
+    /// regains that value; unloading does the same backwards. The difference
+    /// between the two paths is the hysteresis.
+    #[must_use]
+    pub fn jumps(&self, control: Control) -> Vec<Jump> {
+        let pts = self.curve.points();
+        let value = |p: &ForcePoint| match control {
+            Control::Force => p.force,
+            Control::Extension => p.extension,
+        };
+        let (max_kind, min_kind) = match control {
+            Control::Force => (FoldKind::MaxForce, FoldKind::MinForce),
+            Control::Extension => (FoldKind::MaxExtension, FoldKind::MinExtension),
+        };
+        let mut jumps = Vec::new();
+
+        let mut reached = 0;
+        for fold in self.folds.iter().filter(|f| f.kind == max_kind) {
+            if fold.index < reached {
+                continue;
+            }
+            let level = value(&fold.point);
+            let landing = (fold.index + 1..pts.len())
+                .find(|&j| value(&pts[j - 1]) < level && value(&pts[j]) >= level);
+            if let Some(j) = landing {
+                jumps.push(Jump {
+                    control,
+                    direction: Direction::Loading,
+                    from: *fold,
+                    to: interpolate(&pts[j - 1], &pts[j], level, value),
+                    to_index: j,
+                });
+                reached = j;
+            }
+        }
+
+        let mut reached = pts.len();
+        for fold in self.folds.iter().rev().filter(|f| f.kind == min_kind) {
+            if fold.index > reached {
+                continue;
+            }
+            let level = value(&fold.point);
+            let landing = (1..fold.index.min(pts.len()))
+                .rev()
+                .find(|&j| value(&pts[j]) > level && value(&pts[j - 1]) <= level);
+            if let Some(j) = landing {
+                jumps.push(Jump {
+                    control,
+                    direction: Direction::Unloading,
+                    from: *fold,
+                    to: interpolate(&pts[j - 1], &pts[j], level, value),
+                    to_index: j - 1,
+                });
+                reached = j - 1;
+            }
+        }
+        jumps
+    }
+
+    /// How close each stretch lies to each of `branches`, nearest first.
+    ///
+    /// Distances are measured in the (Δz, F/(2πn)²) plane with the curve's
+    /// own force scale, from each stretch point to the branch polyline.
+    #[must_use]
+    pub fn match_branches(&self, branches: &[ForceExtension]) -> Vec<Vec<BranchMatch>> {
+        let scale = self.curve.force_scale();
+        let pts = self.curve.points();
+        self.stretches()
+            .iter()
+            .map(|stretch| {
+                let mut matches: Vec<BranchMatch> = branches
+                    .iter()
+                    .filter(|b| b.len() >= 2)
+                    .map(|b| {
+                        let (mut sum, mut max) = (0.0, 0.0_f64);
+                        for p in &pts[stretch.range.clone()] {
+                            let d = distance_to_polyline(p, b.points(), scale);
+                            sum += d * d;
+                            max = max.max(d);
+                        }
+                        BranchMatch {
+                            label: b.label().to_owned(),
+                            rms_distance: (sum / stretch.range.len() as f64).sqrt(),
+                            max_distance: max,
+                        }
+                    })
+                    .collect();
+                matches.sort_by(|a, b| a.rms_distance.total_cmp(&b.rms_distance));
+                matches
+            })
+            .collect()
+    }
+}
+
+impl core::fmt::Display for Pull {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(
+            f,
+            "{}: {} points, {} folds, {} pop-outs",
+            self.model,
+            self.curve.len(),
+            self.folds.len(),
+            self.pop_outs().len()
+        )
+    }
+}
+
+/// The most common value (the smallest of equally common ones).
+fn mode(values: &[u32]) -> Option<u32> {
+    let mut sorted = values.to_vec();
+    sorted.sort_unstable();
+    let mut best: Option<(u32, usize)> = None;
+    for run in sorted.chunk_by(|a, b| a == b) {
+        if best.is_none_or(|(_, n)| run.len() > n) {
+            best = Some((run[0], run.len()));
+        }
+    }
+    best.map(|(v, _)| v)
+}
+
+fn interpolate(
+    a: &ForcePoint,
+    b: &ForcePoint,
+    level: f64,
+    value: impl Fn(&ForcePoint) -> f64,
+) -> ForcePoint {
+    let (va, vb) = (value(a), value(b));
+    let t = if vb == va {
+        0.0
+    } else {
+        (level - va) / (vb - va)
+    };
+    ForcePoint {
+        extension: a.extension + t * (b.extension - a.extension),
+        force: a.force + t * (b.force - a.force),
+        parameter: a.parameter + t * (b.parameter - a.parameter),
+    }
+}
+
+/// Local extrema of force and extension along the curve, each located at
+/// the vertex of the parabola through the point and its two neighbours
+/// (in the curve's parameter).
+pub(crate) fn detect_folds(pts: &[ForcePoint]) -> Vec<Fold> {
+    let mut folds = Vec::new();
+    for i in 1..pts.len().saturating_sub(1) {
+        let (a, b, c) = (&pts[i - 1], &pts[i], &pts[i + 1]);
+        for (quantity, value) in [(0, b.force), (1, b.extension)] {
+            let get = |p: &ForcePoint| if quantity == 0 { p.force } else { p.extension };
+            let (va, vc) = (get(a), get(c));
+            let kind = match quantity {
+                0 if value > va && value >= vc => FoldKind::MaxForce,
+                0 if value < va && value <= vc => FoldKind::MinForce,
+                1 if value > va && value >= vc => FoldKind::MaxExtension,
+                1 if value < va && value <= vc => FoldKind::MinExtension,
+                _ => continue,
+            };
+            folds.push(Fold {
+                kind,
+                index: i,
+                point: parabola_vertex(a, b, c, get),
+            });
+        }
+    }
+    folds
+}
+
+/// The point at the extremum of `get` on the parabolas through (t, ·) of
+/// the three points, t the curve parameter; falls back to `b` when the
+/// parameters do not separate the points.
+fn parabola_vertex(
+    a: &ForcePoint,
+    b: &ForcePoint,
+    c: &ForcePoint,
+    get: impl Fn(&ForcePoint) -> f64,
+) -> ForcePoint {
+    let (ta, tb, tc) = (a.parameter, b.parameter, c.parameter);
+    let (ya, yb, yc) = (get(a), get(b), get(c));
+    let denom = (ta - tb) * (ta - tc) * (tb - tc);
+    if denom == 0.0 || denom.is_nan() {
+        return *b;
+    }
+    let num = ta * ta * (yb - yc) + tb * tb * (yc - ya) + tc * tc * (ya - yb);
+    let den = 2.0 * (ta * (yb - yc) + tb * (yc - ya) + tc * (ya - yb));
+    let t = num / den;
+    if !(t.is_finite() && t >= ta.min(tc) && t <= ta.max(tc)) {
+        return *b;
+    }
+    let quad = |fa: f64, fb: f64, fc: f64| {
+        fa * (t - tb) * (t - tc) / ((ta - tb) * (ta - tc))
+            + fb * (t - ta) * (t - tc) / ((tb - ta) * (tb - tc))
+            + fc * (t - ta) * (t - tb) / ((tc - ta) * (tc - tb))
+    };
+    ForcePoint {
+        extension: quad(a.extension, b.extension, c.extension),
+        force: quad(a.force, b.force, c.force),
+        parameter: t,
+    }
+}
+
+fn distance_to_polyline(p: &ForcePoint, line: &[ForcePoint], scale: f64) -> f64 {
+    let (px, py) = (p.extension, p.force / scale);
+    line.windows(2)
+        .map(|w| {
+            let (ax, ay) = (w[0].extension, w[0].force / scale);
+            let (bx, by) = (w[1].extension, w[1].force / scale);
+            let (dx, dy) = (bx - ax, by - ay);
+            let len2 = dx * dx + dy * dy;
+            let t = if len2 > 0.0 {
+                (((px - ax) * dx + (py - ay) * dy) / len2).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            (px - ax - t * dx).hypot(py - ay - t * dy)
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Extension t, force t³ − 3t on t ∈ [−3, 3]: force folds at t = ∓1
+    /// (F = ±2); under force control loading jumps from t = −1 to t = 2
+    /// ((t − 2)(t + 1)² = 0) and unloading from t = 1 to t = −2.
+    fn s_curve(points: usize) -> Pull {
+        let mut c = ForceExtension::new("s", "t", 1).unwrap();
+        for i in 0..points {
+            let t = -3.0 + 6.0 * i as f64 / (points - 1) as f64;
+            c.push(ForcePoint {
+                extension: t,
+                force: t * t * t - 3.0 * t,
+                parameter: t,
+            });
+        }
+        Pull::from_curve("test", c)
+    }
+
+    #[test]
+    fn folds_of_a_cubic_are_found_at_its_extrema() {
+        let pull = s_curve(601);
+        let kinds: Vec<_> = pull.folds().iter().map(|f| f.kind).collect();
+        assert_eq!(kinds, [FoldKind::MaxForce, FoldKind::MinForce]);
+        // The parabola through three points of a cubic locates its extremum
+        // with an error O(h²) in t and O(h⁴) in the force; h = 0.01.
+        assert!((pull.folds()[0].point.extension + 1.0).abs() < 1e-4);
+        assert!((pull.folds()[0].point.force - 2.0).abs() < 1e-7);
+        assert!((pull.folds()[1].point.extension - 1.0).abs() < 1e-4);
+        assert_eq!(pull.pop_outs().len(), 1);
+    }
+
+    #[test]
+    fn force_control_jumps_over_the_unstable_part_both_ways() {
+        let pull = s_curve(601);
+        let jumps = pull.jumps(Control::Force);
+        assert_eq!(jumps.len(), 2);
+        let load = jumps
+            .iter()
+            .find(|j| j.direction == Direction::Loading)
+            .unwrap();
+        let unload = jumps
+            .iter()
+            .find(|j| j.direction == Direction::Unloading)
+            .unwrap();
+        // Linear interpolation between points 0.01 apart on a curve with
+        // F″ = 12 at the landing: error ≤ h²·F″/8 / F′ ≈ 2e-5.
+        assert!((load.to.extension - 2.0).abs() < 1e-4, "{load:?}");
+        assert!((unload.to.extension + 2.0).abs() < 1e-4, "{unload:?}");
+        assert!(pull.jumps(Control::Extension).is_empty());
+    }
+
+    #[test]
+    fn stretches_split_at_pop_outs_and_carry_loop_counts() {
+        let pull = s_curve(601);
+        let n = pull.curve().len();
+        let loops: Vec<u32> = (0..n).map(|i| if i < 300 { 2 } else { 1 }).collect();
+        let pull = pull.with_loops(loops);
+        let stretches = pull.stretches();
+        assert_eq!(stretches.len(), 2);
+        assert_eq!(stretches[0].loops, Some(2));
+        assert_eq!(stretches[1].loops, Some(1));
+        assert!(stretches[0].range.end <= stretches[1].range.start);
+    }
+
+    #[test]
+    fn a_stretch_on_a_branch_is_at_distance_zero_from_it() {
+        let pull = s_curve(61);
+        let near = pull.match_branches(&[pull.curve().clone()]);
+        assert!(near.iter().all(|m| m[0].max_distance == 0.0));
+    }
+}

@@ -1,0 +1,164 @@
+//! [`Spring`]: what a user has in hand.
+
+use core::f64::consts::PI;
+
+use nalgebra::Vector3;
+
+use crate::error::{Error, Result};
+use crate::helix::Stiffness;
+
+/// A helical spring of unit length: `n` coils at helix angle θ0 (between the
+/// tangent and the axis), bending stiffnesses A (about d1) and B (about d2)
+/// and torsional stiffness C, and intrinsic strains (u10, u20, u30).
+///
+/// Validated once at construction; every model then answers it without
+/// re-checking. By default the intrinsic strains are those of the unstressed
+/// helix bent about d2 (the paper's Section 4):
+///
+/// ```text
+/// u10 = 0,   u20 = κ0 = 2πn sin θ0,   u30 = τ0 = 2πn cos θ0.
+/// ```
+///
+/// ```
+/// use hockle::spring::Spring;
+/// let s = Spring::paper();
+/// assert_eq!(s.coils(), 4);
+/// assert!((s.stiffness().c() - 1.7316).abs() < 1e-4); // the paper's C/B
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Spring {
+    coils: u32,
+    helix_angle: f64,
+    stiffness: Stiffness,
+    intrinsic: Vector3<f64>,
+}
+
+impl Spring {
+    /// A spring of `coils` turns at `helix_angle` (radians) with `stiffness`,
+    /// whose intrinsic strains are those of its unstressed helix.
+    ///
+    /// # Errors
+    /// [`Error::InvalidCount`] if `coils` is 0; [`Error::InvalidArgument`] if
+    /// `helix_angle` is not in (0, π/2].
+    pub fn new(coils: u32, helix_angle: f64, stiffness: Stiffness) -> Result<Self> {
+        if coils == 0 {
+            return Err(Error::InvalidCount {
+                name: "coils",
+                value: 0,
+                allowed: "at least one coil",
+            });
+        }
+        if !(helix_angle > 0.0 && helix_angle <= PI / 2.0) {
+            return Err(Error::InvalidArgument {
+                name: "helix_angle",
+                value: helix_angle,
+                allowed: "an angle in (0, π/2] radians between tangent and axis",
+            });
+        }
+        let rho = 2.0 * PI * f64::from(coils);
+        let intrinsic = Vector3::new(0.0, rho * helix_angle.sin(), rho * helix_angle.cos());
+        Ok(Self {
+            coils,
+            helix_angle,
+            stiffness,
+            intrinsic,
+        })
+    }
+
+    /// The same spring with the helix angle given in degrees.
+    ///
+    /// # Errors
+    /// As [`Spring::new`].
+    pub fn from_degrees(
+        coils: u32,
+        helix_angle_degrees: f64,
+        stiffness: Stiffness,
+    ) -> Result<Self> {
+        Self::new(coils, helix_angle_degrees.to_radians(), stiffness)
+    }
+
+    /// The paper's spring (Fig. spring): n = 4, θ0 = 89.8°, A/B = 10, ν = 0.05
+    /// (C/B = 1.7316 by the Nikolai equality).
+    #[must_use]
+    pub fn paper() -> Self {
+        let stiffness = Stiffness::nikolai(10.0, 0.05).expect("A/B = 10, ν = 0.05 are valid");
+        Self::from_degrees(4, 89.8, stiffness).expect("n = 4, θ0 = 89.8° are valid")
+    }
+
+    /// The same spring with other intrinsic strains (u10, u20, u30), e.g. a
+    /// rod whose natural curvature is not about d2.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] if a component is not finite.
+    pub fn with_intrinsic_strains(mut self, strains: Vector3<f64>) -> Result<Self> {
+        for (name, v) in ["u10", "u20", "u30"].into_iter().zip(strains.iter()) {
+            if !v.is_finite() {
+                return Err(Error::InvalidArgument {
+                    name,
+                    value: *v,
+                    allowed: "a finite intrinsic strain",
+                });
+            }
+        }
+        self.intrinsic = strains;
+        Ok(self)
+    }
+
+    /// The number of coils n of the unstressed helix.
+    #[must_use]
+    pub fn coils(&self) -> u32 {
+        self.coils
+    }
+
+    /// The helix angle θ0 in radians.
+    #[must_use]
+    pub fn helix_angle(&self) -> f64 {
+        self.helix_angle
+    }
+
+    /// The stiffnesses A, B, C.
+    #[must_use]
+    pub fn stiffness(&self) -> Stiffness {
+        self.stiffness
+    }
+
+    /// The intrinsic strains (u10, u20, u30).
+    #[must_use]
+    pub fn intrinsic_strains(&self) -> Vector3<f64> {
+        self.intrinsic
+    }
+
+    /// Whether the intrinsic strains are those of the unstressed helix
+    /// (u10 = 0, u20 = 2πn sin θ0, u30 = 2πn cos θ0), as the helix and
+    /// elastica models assume.
+    #[must_use]
+    pub fn is_helical(&self) -> bool {
+        let rho = 2.0 * PI * f64::from(self.coils);
+        let natural = Vector3::new(
+            0.0,
+            rho * self.helix_angle.sin(),
+            rho * self.helix_angle.cos(),
+        );
+        self.intrinsic == natural
+    }
+
+    /// The paper's force scale (2πn)²·B.
+    #[must_use]
+    pub fn force_scale(&self) -> f64 {
+        let rho = 2.0 * PI * f64::from(self.coils);
+        rho * rho * self.stiffness.b()
+    }
+}
+
+impl core::fmt::Display for Spring {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(
+            f,
+            "spring: {} coils, θ0 = {}°, {}",
+            self.coils,
+            self.helix_angle.to_degrees(),
+            self.stiffness
+        )
+    }
+}
