@@ -50,7 +50,6 @@ impl State {
         }
     }
 
-    #[allow(dead_code)]
     pub(crate) fn scale(&mut self, a: f64) {
         self.y.iter_mut().for_each(|v| *v *= a);
         self.k.iter_mut().for_each(|v| *v *= a);
@@ -75,14 +74,6 @@ impl Residual {
             .chain(&self.bc)
             .chain(&self.dense)
             .fold(0.0_f64, |m, v| m.max(v.abs()))
-    }
-
-    #[allow(dead_code)]
-    pub(crate) fn fill(&mut self, v: f64) {
-        self.stage.fill(v);
-        self.cont.fill(v);
-        self.bc.fill(v);
-        self.dense.fill(v);
     }
 }
 

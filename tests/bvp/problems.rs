@@ -104,3 +104,80 @@ impl Problem for Troesch {
         g[1] = y1[0] - 1.0;
     }
 }
+
+/// u'' + (pπ)² u − u² = 0, u(0) = u(1) = 0; p = [p]. The trivial branch
+/// u = 0 has branch points exactly at p = 1, 2, 3, …
+pub struct Quadratic;
+
+impl Problem for Quadratic {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn parameter_count(&self) -> usize {
+        1
+    }
+    fn boundary_count(&self) -> usize {
+        2
+    }
+    fn rhs(&self, _s: f64, y: &[f64], p: &[f64], f: &mut [f64]) {
+        let w = p[0] * std::f64::consts::PI;
+        f[0] = y[1];
+        f[1] = -w * w * y[0] + y[0] * y[0];
+    }
+    fn boundary(&self, y0: &[f64], y1: &[f64], _p: &[f64], g: &mut [f64]) {
+        g[0] = y0[0];
+        g[1] = y1[0];
+    }
+}
+
+/// Euler buckling θ'' + P sin θ = 0, θ'(0) = θ'(1) = 0; p = [P]. Branch
+/// points at P = k²π²; the first buckled branch has P = 4 K(k)², k = sin(θ(0)/2).
+pub struct Euler;
+
+impl Problem for Euler {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn parameter_count(&self) -> usize {
+        1
+    }
+    fn boundary_count(&self) -> usize {
+        2
+    }
+    fn rhs(&self, _s: f64, y: &[f64], p: &[f64], f: &mut [f64]) {
+        f[0] = y[1];
+        f[1] = -p[0] * y[0].sin();
+    }
+    fn rhs_jacobian(
+        &self,
+        _s: f64,
+        y: &[f64],
+        p: &[f64],
+        mut dfdy: DMatrixViewMut<'_, f64>,
+        mut dfdp: DMatrixViewMut<'_, f64>,
+    ) -> bool {
+        dfdy[(0, 1)] = 1.0;
+        dfdy[(1, 0)] = -p[0] * y[0].cos();
+        dfdp[(1, 0)] = -y[0].sin();
+        true
+    }
+    fn boundary(&self, y0: &[f64], y1: &[f64], _p: &[f64], g: &mut [f64]) {
+        g[0] = y0[1];
+        g[1] = y1[1];
+    }
+}
+
+/// K(k) by the arithmetic–geometric mean: K = π / (2 AGM(1, √(1 − k²)))
+/// (DLMF 19.8.5), independent of the code under test.
+pub fn ellip_k_agm(k: f64) -> f64 {
+    let (mut a, mut b) = (1.0_f64, (1.0 - k * k).sqrt());
+    for _ in 0..40 {
+        let (an, bn) = (0.5 * (a + b), (a * b).sqrt());
+        a = an;
+        b = bn;
+        if (a - b).abs() <= 1e-16 * a {
+            break;
+        }
+    }
+    std::f64::consts::PI / (2.0 * a)
+}
