@@ -1,4 +1,3 @@
-#![allow(dead_code)] // used by `Equilibrium` once the bvp solver is merged
 //! Outputs of one rod equilibrium, computed on demand from a state
 //! evaluator s ↦ y(s) and the breakpoints of its piecewise representation
 //! (quadratures are composite Gauss–Legendre on those panels, exact for the
@@ -86,17 +85,22 @@ pub(crate) fn planarity<E: Fn(f64) -> [f64; 13]>(eval: E, breaks: &[f64], sample
         .fold(0.0, f64::max)
 }
 
-/// The loop count as a real number: the turning number of the tangent
-/// projected onto the plane normal to ν, the direction the tangents avoid
-/// most (the eigenvector of the smallest eigenvalue of ∫ d3 d3ᵀ ds). For the
-/// unstressed helix ν = k and the count is n; for a planar elastica ν is the
-/// normal of its plane and the count is the number of loops, j (the net turn
-/// of the tangent over the rod, which is 2πj ± less than π for υ-shapes).
-pub(crate) fn turning_number<E: Fn(f64) -> [f64; 13]>(
-    eval: E,
-    breaks: &[f64],
-    samples: usize,
-) -> f64 {
+/// The tangent's turning in the plane it leaves least: the turning number
+/// (net turn / 2π, continuous) and the loop count (how many times the
+/// projected tangent passes a reference direction, an integer).
+///
+/// ν is the eigenvector of the smallest eigenvalue of ∫ d3 d3ᵀ ds (k for the
+/// unstressed helix, the normal of the plane for a planar elastica). The
+/// reference direction is the projection of the force axis k when it lies
+/// in the plane (a planar j-loop υ-shape turns its tangent through the force
+/// direction exactly j times, wherever its ends point), otherwise the
+/// in-plane direction perpendicular to the mean end tangent (the helix: n).
+pub(crate) struct Turning {
+    pub(crate) turns: f64,
+    pub(crate) loops: u32,
+}
+
+pub(crate) fn turning<E: Fn(f64) -> [f64; 13]>(eval: E, breaks: &[f64], samples: usize) -> Turning {
     let mut t = Matrix3::zeros();
     for (s, w) in nodes(breaks) {
         let y = eval(s);
@@ -106,7 +110,6 @@ pub(crate) fn turning_number<E: Fn(f64) -> [f64; 13]>(
     let eig = SymmetricEigen::new(t);
     let imin = eig.eigenvalues.imin();
     let nu = eig.eigenvectors.column(imin).into_owned();
-    // An orthonormal basis (e1, e2) of the plane ⟂ ν, oriented with ν.
     let seed = if nu.x.abs() < 0.9 {
         Vector3::x()
     } else {
@@ -114,35 +117,34 @@ pub(crate) fn turning_number<E: Fn(f64) -> [f64; 13]>(
     };
     let e1 = (seed - nu * nu.dot(&seed)).normalize();
     let e2 = nu.cross(&e1);
-    let mut total = 0.0;
-    let mut prev: Option<f64> = None;
-    for j in 0..=samples {
-        let y = eval(j as f64 / samples as f64);
-        let d3 = rot(&y[3..7]).column(2).into_owned();
-        let a = d3.dot(&e2).atan2(d3.dot(&e1));
-        if let Some(p) = prev {
-            let mut d = a - p;
-            d -= 2.0 * PI * (d / (2.0 * PI)).round();
-            total += d;
-        }
-        prev = Some(a);
-    }
-    (total / (2.0 * PI)).abs()
-}
-
-/// Largest | |q(s)| − 1 | over `samples` + 1 equally spaced points.
-pub(crate) fn quaternion_drift<E: Fn(f64) -> [f64; 13]>(eval: E, samples: usize) -> f64 {
-    (0..=samples)
+    let angles: Vec<f64> = (0..=samples)
         .map(|j| {
             let y = eval(j as f64 / samples as f64);
-            ((y[3] * y[3] + y[4] * y[4] + y[5] * y[5] + y[6] * y[6]).sqrt() - 1.0).abs()
+            let d3 = rot(&y[3..7]).column(2).into_owned();
+            d3.dot(&e2).atan2(d3.dot(&e1))
         })
-        .fold(0.0, f64::max)
-}
-
-/// One equilibrium of the rod: outputs on demand (placeholder until the
-/// solver's solution type is wired in).
-#[derive(Debug, Clone)]
-pub struct Equilibrium {
-    _private: (),
+        .collect();
+    let kp = Vector3::z() - nu * nu.z;
+    let reference = if kp.norm() > 0.5 {
+        kp.dot(&e2).atan2(kp.dot(&e1))
+    } else {
+        let (a0, a1) = (angles[0], angles[angles.len() - 1]);
+        let mean = (a0.sin() + a1.sin()).atan2(a0.cos() + a1.cos());
+        mean + 0.5 * PI
+    };
+    let wrap = |d: f64| d - 2.0 * PI * (d / (2.0 * PI)).round();
+    let mut total = 0.0;
+    let mut crossings = 0_i64;
+    let mut unwrapped = wrap(angles[0] - reference);
+    for w in angles.windows(2) {
+        let d = wrap(w[1] - w[0]);
+        total += d;
+        let next = unwrapped + d;
+        crossings += ((next / (2.0 * PI)).floor() - (unwrapped / (2.0 * PI)).floor()).abs() as i64;
+        unwrapped = next;
+    }
+    Turning {
+        turns: (total / (2.0 * PI)).abs(),
+        loops: u32::try_from(crossings).unwrap_or(u32::MAX),
+    }
 }

@@ -73,6 +73,7 @@
 //! (The frame at φ = 0 is R_z(π/2) R_x(θ0), and the whole frame turns
 //! about k with φ.)
 
+mod equilibrium;
 mod measure;
 mod problem;
 mod quat;
@@ -83,7 +84,7 @@ use nalgebra::Vector3;
 
 use crate::error::{Error, Result};
 
-pub use measure::Equilibrium;
+pub use equilibrium::Equilibrium;
 
 /// Which end load is prescribed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

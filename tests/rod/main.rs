@@ -5,4 +5,5 @@
 mod common;
 
 mod jacobians;
+mod planar;
 mod unstressed;
