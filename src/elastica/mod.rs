@@ -7,6 +7,7 @@ mod family;
 mod integrals;
 mod nonsymmetric;
 mod secondary;
+pub mod series;
 mod solution;
 mod symmetric;
 

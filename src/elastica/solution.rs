@@ -220,6 +220,13 @@ impl Elastica {
         self.omega
     }
 
+    /// Ω − πn, computed without cancellation (O(k⁶) on the υ-branch, O(k²)
+    /// on α and ϑ_n): what the small-k series of Ω describe.
+    #[must_use]
+    pub fn omega_excess(&self) -> f64 {
+        self.excess
+    }
+
     /// The physical tension F = k²Ω² = dU/dΔz (the paper's F = 2k²Ω² is
     /// twice it; see the [module docs](super)).
     #[must_use]

@@ -5,4 +5,5 @@
 mod common;
 
 mod data;
+mod series;
 mod tables;
