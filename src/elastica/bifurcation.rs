@@ -113,7 +113,8 @@ impl core::fmt::Display for Bifurcation {
 /// decades as n/j grows) with a bisection safeguard, to full precision.
 ///
 /// # Errors
-/// [`Error::InvalidCount`] if n = 0 or j = 0;
+/// [`Error::InvalidCount`] if n = 0 or j = 0, or if n/j ≥ 222 (the
+/// modulus would have 1 − k² below the smallest double);
 /// [`Error::SecondaryNeedsOtherPeriods`] if j = n.
 ///
 /// # Accuracy
@@ -138,6 +139,15 @@ pub fn bifurcation(n: u32, j: u32) -> Result<Bifurcation> {
     }
     let target = PI * f64::from(n) / (2.0 * f64::from(j));
     let upsilon = j < n;
+    // K(k) = target needs m₁ ≈ 16 e^(−2 target): below the smallest double
+    // once target > 350
+    if upsilon && target > 350.0 {
+        return Err(Error::InvalidCount {
+            name: "n",
+            value: u64::from(n),
+            allowed: "n/j < 222 (πn/(2j) < 350), so that the bifurcation modulus 1 − k² is above the smallest double",
+        });
+    }
     // f(x) = K(m₁ = e^x) − target (υ) or K k' − target (α); f decreases in
     // m (increases as x decreases) for υ, the other way for α.
     let eval = |x: f64| -> Result<(f64, f64, Modulus)> {

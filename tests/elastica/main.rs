@@ -5,5 +5,6 @@
 mod common;
 
 mod data;
+mod physics;
 mod series;
 mod tables;
