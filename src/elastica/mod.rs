@@ -10,8 +10,10 @@ mod secondary;
 pub mod series;
 mod solution;
 mod symmetric;
+mod trace;
 
 pub use bifurcation::{Bifurcation, bifurcation};
 pub use secondary::{Fold, secondary_fold};
 pub use solution::{Arm, Branch, Elastica, Shape};
 pub use symmetric::Symmetric;
+pub use trace::Trace;

@@ -64,9 +64,13 @@ impl Elastica {
         let branch = Branch::Theta { j };
         let excess = 2.0 * f64::from(j) * k_minus_half_pi(modulus.m(), big_k)
             + PI * (f64::from(j) - f64::from(n));
-        if c > 1.0 || c < kp {
+        // a few ulps of slack at the ends of the range (the ring, the
+        // bifurcation point), where c is 1 or k' up to rounding
+        const SLACK: f64 = 4.0 * f64::EPSILON;
+        if c > 1.0 + SLACK || c < kp * (1.0 - SLACK) {
             return Ok(Vec::new());
         }
+        let c = c.clamp(kp, 1.0);
         if modulus.m() == 0.0 {
             // the ring: every s1 is a root; report s1 = 0
             return Ok(vec![Elastica::from_parts(

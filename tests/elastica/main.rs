@@ -8,3 +8,4 @@ mod data;
 mod physics;
 mod series;
 mod tables;
+mod trace;
