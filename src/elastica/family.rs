@@ -16,7 +16,7 @@ use core::f64::consts::PI;
 
 use super::integrals::k_minus_half_pi;
 use super::solution::Ends;
-use crate::special::{Modulus, jacobi};
+use crate::special::{Jacobi, Modulus, jacobi};
 
 /// Which family.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -78,17 +78,21 @@ impl Member {
         }
     }
 
-    /// The [`Ends`] of the member at t.
-    pub fn ends(&self, t: f64) -> Ends {
+    /// The [`Ends`] of the member at t (with the Jacobi functions at t).
+    pub fn ends(&self, jac: Jacobi) -> Ends {
         match self.family {
-            Family::Upsilon => Ends::Upsilon { c: self.c, t },
-            Family::Alpha => Ends::Alpha { c: self.c, t },
+            Family::Upsilon => Ends::Upsilon { c: self.c, jac },
+            Family::Alpha => Ends::Alpha { c: self.c, jac },
         }
     }
 
     /// g(t), g'(t), g''(t).
     pub fn eval(&self, t: f64) -> (f64, f64, f64) {
-        let j = jacobi(t, self.modulus);
+        self.eval_with(t, &jacobi(t, self.modulus))
+    }
+
+    /// g(t), g'(t), g''(t) from the Jacobi functions at t.
+    pub fn eval_with(&self, t: f64, j: &Jacobi) -> (f64, f64, f64) {
         let m = self.modulus.m();
         let (sn, cn, dn) = (j.sn, j.cn, j.dn);
         let om = self.omega(t);
@@ -122,40 +126,61 @@ impl Member {
     }
 
     /// The root of g in [a, b] where g(a) and g(b) have opposite signs
-    /// (given as `a_positive`), by Newton steps kept inside the bracket with
-    /// bisection as the fallback. Starts at `guess`.
-    pub fn solve(&self, mut a: f64, mut b: f64, a_positive: bool, guess: f64) -> f64 {
+    /// (given as `a_positive`), by Halley steps kept inside the bracket with
+    /// bisection as the fallback, from `guess`. Returns the root and the
+    /// Jacobi functions there: Newton runs until its step is below 8ε|t|,
+    /// and the point where the functions were last evaluated is returned
+    /// (its error is that step).
+    pub fn solve(&self, mut a: f64, mut b: f64, a_positive: bool, guess: f64) -> (f64, Jacobi) {
         let mut x = guess.clamp(a, b);
+        let mut last = (
+            x,
+            Jacobi {
+                sn: f64::NAN,
+                cn: f64::NAN,
+                dn: f64::NAN,
+                am: f64::NAN,
+            },
+        );
+        let mut dx_prev = f64::INFINITY;
         for _ in 0..200 {
-            let (g, g1, _) = self.eval(x);
+            let jac = jacobi(x, self.modulus);
+            last = (x, jac);
+            let (g, g1, g2) = self.eval_with(x, &jac);
             if g == 0.0 {
-                return x;
+                return last;
             }
             if (g > 0.0) == a_positive {
                 a = x;
             } else {
                 b = x;
             }
-            let newton = x - g / g1;
-            let (next, newton_ok) = if newton > a && newton < b && newton.is_finite() {
+            // Halley's step (cubic convergence; g'' comes almost free)
+            let newton = x - 2.0 * g * g1 / (2.0 * g1 * g1 - g * g2);
+            let (next, newton_ok) = if newton >= a && newton <= b && newton.is_finite() {
                 (newton, true)
             } else {
                 (0.5 * (a + b), false)
             };
             let dx = (next - x).abs();
-            x = next;
-            // relative to |t| (t → 0 as k → 0 and the extension needs t to
-            // relative accuracy), with an absolute floor far below any use
-            if (newton_ok && dx <= 1e-9 * x.abs().max(1e-300))
-                || (b - a) <= 2.0 * f64::EPSILON * x.abs().max(1e-300)
+            // relative to |t|: t → 0 as k → 0 and the extension needs t to
+            // relative accuracy. Newton's steps shrink quadratically until
+            // they reach the rounding noise of g; a step at the 1e-10 level
+            // that is not at least 4 times smaller than the previous one is
+            // that noise.
+            if newton_ok
+                && (dx <= 8.0 * f64::EPSILON * x.abs()
+                    || (dx <= 1e-10 * x.abs() && dx >= 0.25 * dx_prev))
             {
-                if newton_ok {
-                    return x;
-                }
-                return 0.5 * (a + b);
+                return last;
             }
+            dx_prev = if newton_ok { dx } else { f64::INFINITY };
+            if (b - a) <= 4.0 * f64::EPSILON * x.abs().max(f64::MIN_POSITIVE) {
+                return last;
+            }
+            x = next;
         }
-        x
+        last
     }
 
     /// The extremum t* of g in (−K, 0) nearest to 0 (the maximum for the
@@ -189,7 +214,7 @@ impl Member {
                 a = x;
             }
             let newton = x - g1 / g2;
-            let (next, ok) = if newton > a && newton < b && newton.is_finite() {
+            let (next, ok) = if newton >= a && newton <= b && newton.is_finite() {
                 (newton, true)
             } else {
                 (0.5 * (a + b), false)

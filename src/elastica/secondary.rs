@@ -73,7 +73,7 @@ fn solve_arm(n: u32, j: u32, arm: Arm, modulus: Modulus) -> Option<Elastica> {
     let upsilon = member.family == Family::Upsilon;
     let bifurcating = arm == Arm::bifurcating(n, j);
     // bifurcating arm on [t*, K], the other on [−K, t*]
-    let t = if bifurcating {
+    let (t, jac) = if bifurcating {
         member.solve(t_star, big_k, upsilon, 0.0)
     } else {
         member.solve(-big_k, t_star, !upsilon, 0.5 * (t_star - big_k))
@@ -85,7 +85,7 @@ fn solve_arm(n: u32, j: u32, arm: Arm, modulus: Modulus) -> Option<Elastica> {
         member.omega(t),
         member.excess(t),
         member.start(t),
-        member.ends(t),
+        member.ends(jac),
         Branch::Secondary { j, arm },
     ))
 }

@@ -6,7 +6,7 @@ use nalgebra::Point2;
 
 use super::integrals::{SMALL_M, i_between, i_period};
 use crate::error::{Error, Result};
-use crate::special::{Modulus, ellip_e, jacobi, jacobi_epsilon};
+use crate::special::{Jacobi, Modulus, ellip_e, ellip_e_inc, jacobi, jacobi_epsilon};
 
 /// The shape class of a solution (the paper's Greek letters).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -183,7 +183,7 @@ impl Elastica {
         ends: Ends,
         branch: Branch,
     ) -> Self {
-        let extension = extension(modulus, big_k, omega, u1, ends);
+        let extension = extension(modulus, omega, u1, ends);
         Self {
             n,
             modulus,
@@ -316,7 +316,8 @@ impl Elastica {
         if m == 0.0 {
             return 0.0;
         }
-        if m < SMALL_M {
+        // the closed form loses ~(πn)²ε/U: keep the quadrature up to m = ½
+        if m < 0.5 {
             let phi1 = jacobi(self.u1, self.modulus).am;
             let phi2 = jacobi(self.u1 + self.omega, self.modulus).am;
             let (om, ex) = (self.omega, self.excess);
@@ -388,7 +389,7 @@ impl Elastica {
 
 /// Δz at the ends u1, u2 = u1 + Ω (the paper's sign: positive in tension).
 ///
-/// For m ≥ ½ eq5 directly: Δz = 2/m − 1 − 2(ε(u2) − ε(u1))/(mΩ). Below, that
+/// For m ≥ ¼ eq5 directly: Δz = 2/m − 1 − 2(ε(u2) − ε(u1))/(mΩ). Below, that
 /// cancels (Δz = O(k²) from terms of size 2/m), so z′ = 1 − 2sn² = cos 2φ
 /// is integrated by parts in φ = am u (du = dφ/Δ):
 ///
@@ -400,35 +401,54 @@ impl Elastica {
 /// 2 sn cn/dn (t) / Ω at the end distance t ≥ 0, zero for ϑ where the ends
 /// are a whole number of periods apart and the integral is j I_π), so the
 /// sum keeps relative accuracy as k → 0.
-pub(crate) fn extension(modulus: Modulus, big_k: f64, omega: f64, u1: f64, ends: Ends) -> f64 {
+pub(crate) fn extension(modulus: Modulus, omega: f64, u1: f64, ends: Ends) -> f64 {
     let m = modulus.m();
     if m == 0.0 {
         return 0.0;
     }
     if m >= SMALL_M {
-        if let Ends::Periodic { .. } = ends {
-            return 2.0 / m * (1.0 - ellip_e(modulus) / big_k) - 1.0;
-        }
-        let de = jacobi_epsilon(u1 + omega, modulus) - jacobi_epsilon(u1, modulus);
+        // Δε = ε(u2) − ε(u1) from the end distance t: ε(2cK − t) = 2cE − ε(t)
+        // (υ) and ε((2c+1)K + t) − ε(K − t) = 2cE + 2ε(t) − 2m sn t cd t (α,
+        // DLMF 22.16.27); ε(t) = E(am t | m).
+        let de = match ends {
+            Ends::Periodic { j } => 2.0 * f64::from(j) * ellip_e(modulus),
+            Ends::Upsilon { c, jac } => {
+                2.0 * c * ellip_e(modulus) - 2.0 * ellip_e_inc(jac.am, modulus)
+            }
+            Ends::Alpha { c, jac } => {
+                2.0 * c * ellip_e(modulus) + 2.0 * ellip_e_inc(jac.am, modulus)
+                    - 2.0 * m * jac.sn * jac.cn / jac.dn
+            }
+            Ends::General => jacobi_epsilon(u1 + omega, modulus) - jacobi_epsilon(u1, modulus),
+        };
         return 2.0 / m - 1.0 - 2.0 * de / (m * omega);
     }
     // The end values are taken at the end distance t, not at u2 = u1 + Ω,
     // whose rounding (ε·Ω) would swamp sn(t) when t = O(k²).
     let (boundary, integral) = match ends {
         Ends::Periodic { j } => (0.0, f64::from(j) * i_period(m)),
-        Ends::Upsilon { c, t } => {
+        Ends::Upsilon { c, jac } => {
             // φ1 = am t, φ2 = cπ − am t
-            let a = jacobi(t, modulus);
-            let phi1 = a.am;
-            (-2.0 * a.sn * a.cn / a.dn, i_between(m, phi1, c * PI - phi1))
-        }
-        Ends::Alpha { c, t } => {
-            // φ1 = am(K − t) = atan2(cn t, k' sn t), φ2 = (c + 1)π − φ1
-            let a = jacobi(t, modulus);
-            let phi1 = a.cn.atan2(modulus.k_prime() * a.sn);
+            let phi1 = jac.am;
             (
-                -2.0 * a.sn * a.cn / a.dn,
+                -2.0 * jac.sn * jac.cn / jac.dn,
+                i_between(m, phi1, c * PI - phi1),
+            )
+        }
+        Ends::Alpha { c, jac } => {
+            // φ1 = am(K − t) = atan2(cn t, k' sn t), φ2 = (c + 1)π − φ1
+            let phi1 = jac.cn.atan2(modulus.k_prime() * jac.sn);
+            (
+                -2.0 * jac.sn * jac.cn / jac.dn,
                 i_between(m, phi1, (c + 1.0) * PI - phi1),
+            )
+        }
+        Ends::General => {
+            let a = jacobi(u1, modulus);
+            let b = jacobi(u1 + omega, modulus);
+            (
+                b.sn * b.cn / b.dn - a.sn * a.cn / a.dn,
+                i_between(m, a.am, b.am),
             )
         }
     };
@@ -440,10 +460,13 @@ pub(crate) fn extension(modulus: Modulus, big_k: f64, omega: f64, u1: f64, ends:
 pub(crate) enum Ends {
     /// A whole number of periods (ϑ).
     Periodic { j: u32 },
-    /// υ-family member c with end distance t.
-    Upsilon { c: f64, t: f64 },
-    /// α-family member c with end distance t.
-    Alpha { c: f64, t: f64 },
+    /// Anywhere (ends given by u1 and Ω only).
+    #[allow(dead_code)]
+    General,
+    /// υ-family member c with the Jacobi functions at the end distance t.
+    Upsilon { c: f64, jac: Jacobi },
+    /// α-family member c with the Jacobi functions at the end distance t.
+    Alpha { c: f64, jac: Jacobi },
 }
 
 /// Composite 8-point Gauss–Legendre quadrature of f over [a, b] with

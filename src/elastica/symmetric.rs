@@ -5,7 +5,7 @@ use core::f64::consts::FRAC_PI_2;
 use super::family::{Family, Member};
 use super::solution::{Branch, Elastica, check_modulus, check_n, modulus_from_k};
 use crate::error::Result;
-use crate::special::{Modulus, ellip_k};
+use crate::special::{Modulus, ellip_k, jacobi};
 
 /// The two primary symmetric solutions at one modulus k (same k, different Ω).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -76,9 +76,10 @@ impl Elastica {
     pub fn symmetric_with(n: u32, modulus: Modulus) -> Result<Symmetric> {
         check_n(n)?;
         let modulus = check_modulus(modulus)?;
+        let big_k = ellip_k(modulus);
         Ok(Symmetric {
-            upsilon: primary(n, modulus, Family::Upsilon),
-            alpha: primary(n, modulus, Family::Alpha),
+            upsilon: primary_with(n, modulus, Family::Upsilon, big_k),
+            alpha: primary_with(n, modulus, Family::Alpha, big_k),
         })
     }
 
@@ -102,14 +103,17 @@ impl Elastica {
 }
 
 pub(crate) fn primary(n: u32, modulus: Modulus, family: Family) -> Elastica {
-    let big_k = ellip_k(modulus);
+    primary_with(n, modulus, family, ellip_k(modulus))
+}
+
+fn primary_with(n: u32, modulus: Modulus, family: Family, big_k: f64) -> Elastica {
     let member = Member::new(family, n, n, big_k, modulus);
     let branch = match family {
         Family::Upsilon => Branch::Upsilon,
         Family::Alpha => Branch::Alpha,
     };
-    let t = if modulus.m() == 0.0 {
-        0.0
+    let (t, jac) = if modulus.m() == 0.0 {
+        (0.0, jacobi(0.0, modulus))
     } else {
         // t ≈ n(K − π/2) for small k (both families); near k = 1 the end
         // sits about ln(4K/π) from the extremum.
@@ -128,7 +132,7 @@ pub(crate) fn primary(n: u32, modulus: Modulus, family: Family) -> Elastica {
         member.omega(t),
         member.excess(t),
         member.start(t),
-        member.ends(t),
+        member.ends(jac),
         branch,
     )
 }
