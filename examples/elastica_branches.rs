@@ -88,7 +88,7 @@ fn dashed(
         series(c),
         6,
         4,
-        color.stroke_width(2).into(),
+        color.stroke_width(2),
     ))?;
     Ok(())
 }
