@@ -341,14 +341,22 @@ impl Elastica {
     /// ends at (0, Δz) (the paper's figures draw the force horizontally).
     ///
     /// ```text
-    /// x(s) = (2/Ω) (sn² u1 − sn² u) / (dn u + dn u1) · (−1)
-    /// z(s) = −(s + (2/(k²Ω)) (ε(u) − ε(u1)) − 2s/k²),   u = u1 + Ωs
+    /// x(s) = −(2/Ω) (sn² u1 − sn² u) / (dn u + dn u1),    u = u1 + Ωs
+    /// z(s) = ∫0^s (2 sn² u − 1) ds
     /// ```
     ///
-    /// (eq5 shifted to the start and turned by π so that Δz > 0; x is written
-    /// without the 1/k² cancellation.) z is evaluated by 8-point
-    /// Gauss–Legendre quadrature of z′ = 2sn²u − 1 on sub-steps of at most
-    /// min(K/4, ½) in u, which stays accurate as k → 0 where eq5 cancels.
+    /// This is eq5 shifted to the start and turned by π so that Δz > 0, with
+    /// x written without the 1/k² cancellation; z is evaluated by 8-point
+    /// Gauss–Legendre quadrature on sub-steps of at most min(K/4, ½) in u,
+    /// which stays accurate as k → 0 where eq5 cancels.
+    ///
+    /// ```
+    /// let e = hockle::elastica::Elastica::symmetric(2, 0.7)?.alpha;
+    /// let c = e.centreline(101)?;
+    /// assert_eq!(c[0], hockle::nalgebra::Point2::new(0.0, 0.0));
+    /// assert!((c[100].y - e.extension()).abs() < 1e-12 && c[100].x.abs() < 1e-12);
+    /// # Ok::<(), hockle::Error>(())
+    /// ```
     ///
     /// # Errors
     /// [`Error::InvalidCount`] if `samples` < 2.

@@ -193,6 +193,27 @@ fn secondary_branches_meet_theta_at_the_bifurcation_and_fold_below_it() {
 }
 
 #[test]
+fn k_prime_down_to_1e_150() {
+    // Modulus keeps m₁ exact: F ≈ (2nK)² with K ≈ ½ ln(16/m₁) ≈ 346
+    let md = Modulus::from_complement(1e-300).unwrap();
+    let s = Elastica::symmetric_with(4, md).unwrap();
+    for e in [s.upsilon, s.alpha] {
+        assert!(e.force().is_finite() && e.force() > 1e5);
+        assert!(e.extension() > 0.99 && e.extension() < 1.0, "{e}");
+        for kap in e.end_curvatures() {
+            assert!(
+                rel_err(kap, 8.0 * core::f64::consts::PI) < 1e-10,
+                "{e}: {kap}"
+            );
+        }
+    }
+    let t = Elastica::nonsymmetric_with(4, 4, md).unwrap();
+    assert_eq!(t.len(), 2);
+    let e = Elastica::secondary_arm(4, 3, Arm::Lower, md).unwrap();
+    assert!(e.extension() < 1.0 && e.force().is_finite());
+}
+
+#[test]
 fn bad_input_is_a_typed_error() {
     assert!(matches!(
         Elastica::symmetric(0, 0.5),
