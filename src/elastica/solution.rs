@@ -420,11 +420,11 @@ pub(crate) fn extension(modulus: Modulus, omega: f64, u1: f64, ends: Ends) -> f6
         // DLMF 22.16.27); ε(t) = E(am t | m).
         let de = match ends {
             Ends::Periodic { j } => 2.0 * f64::from(j) * ellip_e(modulus),
-            Ends::Upsilon { c, jac } => {
-                2.0 * c * ellip_e(modulus) - 2.0 * ellip_e_inc(jac.am, modulus)
+            Ends::Upsilon { c, jac, e } => {
+                2.0 * c * known_or(e, modulus) - 2.0 * ellip_e_inc(jac.am, modulus)
             }
-            Ends::Alpha { c, jac } => {
-                2.0 * c * ellip_e(modulus) + 2.0 * ellip_e_inc(jac.am, modulus)
+            Ends::Alpha { c, jac, e } => {
+                2.0 * c * known_or(e, modulus) + 2.0 * ellip_e_inc(jac.am, modulus)
                     - 2.0 * m * jac.sn * jac.cn / jac.dn
             }
             Ends::General => jacobi_epsilon(u1 + omega, modulus) - jacobi_epsilon(u1, modulus),
@@ -435,7 +435,7 @@ pub(crate) fn extension(modulus: Modulus, omega: f64, u1: f64, ends: Ends) -> f6
     // whose rounding (ε·Ω) would swamp sn(t) when t = O(k²).
     let (boundary, integral) = match ends {
         Ends::Periodic { j } => (0.0, f64::from(j) * i_period(m)),
-        Ends::Upsilon { c, jac } => {
+        Ends::Upsilon { c, jac, .. } => {
             // φ1 = am t, φ2 = cπ − am t
             let phi1 = jac.am;
             (
@@ -443,7 +443,7 @@ pub(crate) fn extension(modulus: Modulus, omega: f64, u1: f64, ends: Ends) -> f6
                 i_between(m, phi1, c * PI - phi1),
             )
         }
-        Ends::Alpha { c, jac } => {
+        Ends::Alpha { c, jac, .. } => {
             // φ1 = am(K − t) = atan2(cn t, k' sn t), φ2 = (c + 1)π − φ1
             let phi1 = jac.cn.atan2(modulus.k_prime() * jac.sn);
             (
@@ -463,6 +463,10 @@ pub(crate) fn extension(modulus: Modulus, omega: f64, u1: f64, ends: Ends) -> f6
     -boundary / omega + m / (4.0 * omega) * integral
 }
 
+fn known_or(e: f64, modulus: Modulus) -> f64 {
+    if e.is_nan() { ellip_e(modulus) } else { e }
+}
+
 /// Where the ends of a solution sit, for [`extension`].
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum Ends {
@@ -471,10 +475,12 @@ pub(crate) enum Ends {
     /// Anywhere (ends given by u1 and Ω only).
     #[allow(dead_code)]
     General,
-    /// υ-family member c with the Jacobi functions at the end distance t.
-    Upsilon { c: f64, jac: Jacobi },
-    /// α-family member c with the Jacobi functions at the end distance t.
-    Alpha { c: f64, jac: Jacobi },
+    /// υ-family member c with the Jacobi functions at the end distance t
+    /// and E(k) if known (NaN otherwise).
+    Upsilon { c: f64, jac: Jacobi, e: f64 },
+    /// α-family member c with the Jacobi functions at the end distance t
+    /// and E(k) if known (NaN otherwise).
+    Alpha { c: f64, jac: Jacobi, e: f64 },
 }
 
 /// Composite 8-point Gauss–Legendre quadrature of f over [a, b] with
