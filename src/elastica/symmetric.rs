@@ -110,6 +110,29 @@ impl Elastica {
     }
 }
 
+/// Below this m the small-k guess t ≈ n(K − π/2) is used.
+const GUESS_SWITCH: f64 = 0.45;
+
+/// Near k = 1, dn t ≈ sech t away from K: the υ end solves
+/// 2(nK − t) sech t = πn and the α end τ = K − t solves
+/// 2((n + 1)K − τ) sech τ = πn; three fixed-point steps of
+/// t = acosh(2(cK − t)/(πn)).
+fn asymptotic_guess(n: u32, big_k: f64, family: Family) -> f64 {
+    let pn = core::f64::consts::PI * f64::from(n);
+    let c = match family {
+        Family::Upsilon => f64::from(n),
+        Family::Alpha => f64::from(n) + 1.0,
+    };
+    let mut t = 0.0_f64;
+    for _ in 0..3 {
+        t = (2.0 * (c * big_k - t) / pn).max(1.0).acosh();
+    }
+    match family {
+        Family::Upsilon => t,
+        Family::Alpha => big_k - t,
+    }
+}
+
 pub(crate) fn primary(n: u32, modulus: Modulus, family: Family) -> Elastica {
     primary_with(n, modulus, family, ellip_k(modulus), f64::NAN)
 }
@@ -126,10 +149,10 @@ fn primary_with(n: u32, modulus: Modulus, family: Family, big_k: f64, big_e: f64
     } else {
         // t ≈ n(K − π/2) for small k (both families); near k = 1 the end
         // sits about ln(4K/π) from the extremum.
-        let guess = if modulus.m() < 0.8 {
+        let guess = if modulus.m() < GUESS_SWITCH {
             f64::from(n) * (big_k - FRAC_PI_2)
         } else {
-            (4.0 * big_k / core::f64::consts::PI).ln()
+            asymptotic_guess(n, big_k, family)
         };
         // υ: g(0) = 2nK − πn ≥ 0 decreasing; α: g(0) = 2nKk' − πn ≤ 0 increasing
         member.solve(0.0, big_k, family == Family::Upsilon, guess)
