@@ -8,18 +8,39 @@ use super::complete::{ellip_e, ellip_k};
 pub(crate) const PI_HI: f64 = core::f64::consts::PI;
 pub(crate) const PI_LO: f64 = 1.224_646_799_147_353_2e-16;
 
-/// φ = jπ + r with |r| ≤ π/2 (up to rounding), r accurate to ~1 ulp of r
-/// for |j| < 2⁵³: j·π is formed as a double-double, and φ − fl(jπ) is exact
-/// by Sterbenz's lemma.
+/// x rounded to the nearest integer, ties to even, by the 1.5·2⁵² trick for
+/// |x| < 2⁵¹ (without SSE4.1 `f64::round_ties_even` is a library call).
+#[inline(always)]
+pub(crate) fn round_ties_even(x: f64) -> f64 {
+    const MAGIC: f64 = 6_755_399_441_055_744.0;
+    if x.abs() < 2_251_799_813_685_248.0 {
+        (x + MAGIC) - MAGIC
+    } else {
+        x.round_ties_even()
+    }
+}
+
+/// π in three parts (Cody–Waite): `PI_A` and `PI_B` have 33 significant
+/// bits, so j·PI_A and j·PI_B are exact for |j| < 2²⁰; the sum is π to
+/// 2e-37.
+const PI_A: f64 = 3.141_592_653_468_251_2;
+const PI_B: f64 = 1.215_420_101_260_793_2e-10;
+const PI_C: f64 = 4.044_532_497_591_901e-21;
+
+/// φ = jπ + r with |r| ≤ π/2 (up to rounding), r accurate to ~1 ulp of r:
+/// φ − j·PI_A is exact (Sterbenz), the later parts only round once each.
+/// Beyond |j| = 2²⁰ the products are formed exactly with FMA instead.
 pub(crate) fn reduce_pi(phi: f64) -> (f64, f64) {
-    let j = (phi / PI_HI).round_ties_even();
+    let j = round_ties_even(phi / PI_HI);
     if j == 0.0 {
         return (0.0, phi);
     }
+    if j.abs() < 1_048_576.0 {
+        return (j, ((phi - j * PI_A) - j * PI_B) - j * PI_C);
+    }
     let p = j * PI_HI;
     let e = j.mul_add(PI_HI, -p); // exact error of j·PI_HI
-    let r = (phi - p) - e - j * PI_LO;
-    (j, r)
+    (j, (phi - p) - e - j * PI_LO)
 }
 
 /// φ = jπ + r as [`reduce_pi`], with s = sin|r|, c = cos|r| ≥ 0: when
