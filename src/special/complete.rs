@@ -61,6 +61,10 @@ pub(crate) fn ellip_k_dd(modulus: Modulus) -> (f64, f64) {
 /// K(0) = π/2; K(1) = +∞ (m₁ = 0); K ~ ½ ln(16/m₁) as m₁ → 0, finite for
 /// every m₁ > 0 including subnormals.
 ///
+/// # Accuracy
+/// Max 0.88 ulp, median 0.18, over 2012 moduli with m₁ down to 1e-300.
+/// See the [module docs](crate::special#accuracy) for the table.
+///
 /// # Examples
 /// ```
 /// use hockle::special::{Modulus, ellip_k};
@@ -90,6 +94,10 @@ pub fn ellip_k(modulus: Modulus) -> f64 {
 ///
 /// # Special cases
 /// E(0) = π/2; E(1) = 1.
+///
+/// # Accuracy
+/// Max 0.53 ulp, median 0.02, over 2012 moduli with m₁ down to 1e-300.
+/// See the [module docs](crate::special#accuracy) for the table.
 ///
 /// # Examples
 /// ```

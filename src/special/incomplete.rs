@@ -131,6 +131,11 @@ pub(crate) fn e_reduced(s: f64, c: f64, modulus: Modulus) -> f64 {
 /// NaN or infinite φ gives NaN. F(0, k) = 0; F(φ, 0) = φ; F is odd in φ.
 /// For k = 1 (m₁ = 0), F = atanh(sin φ) for |φ| < π/2 and ±∞ beyond.
 ///
+/// # Accuracy
+/// Max 1.83 ulp (1.18 ulp normalised by 1 + the condition number in φ)
+/// over 2120 points, |φ| ≤ 100, m₁ down to 1e-300.
+/// See the [module docs](crate::special#accuracy) for the table.
+///
 /// # Examples
 /// ```
 /// use hockle::special::{Modulus, ellip_f, ellip_k};
@@ -171,6 +176,11 @@ pub fn ellip_f(phi: f64, modulus: Modulus) -> f64 {
 /// # Special cases
 /// NaN or infinite φ gives NaN. E(0, k) = 0; E(φ, 0) = φ; E(φ, 1) = sin φ on
 /// [−π/2, π/2]; E is odd in φ.
+///
+/// # Accuracy
+/// Max 1.85 ulp (1.35 normalised) over 2120 points, |φ| ≤ 100, m₁ down
+/// to 1e-300.
+/// See the [module docs](crate::special#accuracy) for the table.
 ///
 /// # Examples
 /// ```
