@@ -1,7 +1,7 @@
 //! Incomplete elliptic integrals F(φ, k) and E(φ, k) for any real φ.
 
 use super::Modulus;
-use super::carlson::{rf, rf_rd};
+use super::carlson::{rf_rd_roots, rf_roots};
 use super::complete::{ellip_e, ellip_k};
 
 /// π split as a double-double: `PI_HI + PI_LO` = π to ~1e-32.
@@ -64,16 +64,20 @@ fn reduce_pi_sin_cos(phi: f64) -> (f64, f64, f64, f64) {
 /// F  = s R_F(c², Δ², 1)                  DLMF 19.25.5
 /// E  = m₁ F + (m m₁/3) s³ R_D(c², 1, Δ²) + m s c / Δ      DLMF 19.25.9
 /// ```
+#[inline]
 fn f_direct(s: f64, c: f64, mc: f64) -> f64 {
     let c2 = c * c;
-    s * rf(c2, c2 + mc * s * s, 1.0)
+    let d2 = c2 + mc * s * s;
+    s * rf_roots(c2, d2, 1.0, c, d2.sqrt(), 1.0)
 }
 
+#[inline]
 fn e_direct(s: f64, c: f64, m: f64, mc: f64) -> f64 {
     let c2 = c * c;
     let d2 = c2 + mc * s * s;
-    let (rf, rd) = rf_rd(c2, 1.0, d2);
-    mc * (s * rf) + m * mc / 3.0 * s * s * s * rd + m * s * c / d2.sqrt()
+    let d = d2.sqrt();
+    let (rf, rd) = rf_rd_roots(c2, 1.0, d2, c, 1.0, d);
+    mc * (s * rf) + m * mc / 3.0 * s * s * s * rd + m * s * c / d
 }
 
 /// Near π/2 (c² < m₁ s²/4) the complementary amplitude ψ, tan ψ = cot r / k′
@@ -149,6 +153,7 @@ pub(crate) fn e_reduced(s: f64, c: f64, modulus: Modulus) -> f64 {
 /// # References
 /// DLMF §19.2, §19.25; B. C. Carlson, Numer. Algorithms 10 (1995) 13–26.
 #[must_use]
+#[inline]
 pub fn ellip_f(phi: f64, modulus: Modulus) -> f64 {
     if !phi.is_finite() {
         return f64::NAN;
@@ -193,6 +198,7 @@ pub fn ellip_f(phi: f64, modulus: Modulus) -> f64 {
 /// # References
 /// DLMF §19.2, §19.25.
 #[must_use]
+#[inline]
 pub fn ellip_e_inc(phi: f64, modulus: Modulus) -> f64 {
     if !phi.is_finite() {
         return f64::NAN;
