@@ -70,8 +70,8 @@
 //! # Accuracy
 //!
 //! Against 50-digit mpmath tables (`tests/data/gen_elastica.py`): Ω and F
-//! ≤ 1.4e-15 relative, Δz ≤ 3e-14, U ≤ 1.3e-14, bifurcation points
-//! ≤ 7e-15, for k from 1e-3 to k′ = 1e-10 (docs/ACCURACY.md). The closed
+//! ≤ 1.1e-15 relative, Δz ≤ 2.2e-14, U ≤ 8.4e-15, bifurcation points
+//! ≤ 4.1e-15, for k from 1e-3 to k′ = 1e-10 (docs/ACCURACY.md). The closed
 //! forms also agree with a direct RK4 integration of ϑ'' = −F sin ϑ (ends on
 //! the force line, end curvature 2πn, extension).
 //!
