@@ -192,6 +192,32 @@ fn secondary_branches_meet_theta_at_the_bifurcation_and_fold_below_it() {
     }
 }
 
+/// At the bifurcation points the ends sit at curvature extrema, so the end
+/// tangents are along the force (the paper: "along the end-to-end distance
+/// and the z-axis"): ϑ = 2 am u ∈ πℤ at both ends, i.e. x′ = −sin ϑ = 0.
+#[test]
+fn bifurcation_shapes_have_end_tangents_along_the_force() {
+    for (n, j) in [(4u32, 3u32), (4, 5), (7, 2), (2, 6)] {
+        let e = bifurcation(n, j).unwrap().solution();
+        let md = e.elliptic_modulus();
+        for s in [0.0, 1.0] {
+            let theta = 2.0 * jacobi(e.omega() * (e.start() + s), md).am;
+            // am at u ≈ 2jK carries the rounding of u (ε·Ω): |sin ϑ| ≲ 1e-13
+            assert!(theta.sin().abs() < 1e-12, "n={n} j={j} s={s}: ϑ = {theta}");
+        }
+        let c = e.centreline(2001).unwrap();
+        // the first chord is along z: x changes only at second order,
+        // x ≈ ½κ0h² with h = 1/2000, while |Δz| ≈ h
+        let d = c[1] - c[0];
+        let (h, kappa0) = (1.0 / 2000.0, 2.0 * core::f64::consts::PI * f64::from(n));
+        assert!(
+            (d.x.abs() - 0.5 * kappa0 * h * h).abs() < 1e-3 * kappa0 * h * h,
+            "n={n} j={j}: {d}"
+        );
+        assert!((d.y.abs() - h).abs() < 1e-3 * h, "n={n} j={j}: {d}");
+    }
+}
+
 #[test]
 fn k_prime_down_to_1e_150() {
     // Modulus keeps m₁ exact: F ≈ (2nK)² with K ≈ ½ ln(16/m₁) ≈ 346
