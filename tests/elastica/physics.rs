@@ -307,3 +307,95 @@ proptest! {
         }
     }
 }
+
+/// Extension on a branch (given as a function of ln m₁) at the force `f`,
+/// by bisection in ln m₁ (the force grows along each branch towards k = 1).
+fn extension_at(branch: impl Fn(f64) -> Option<Elastica>, f: f64, mut lo: f64) -> f64 {
+    let mut hi = -200.0_f64;
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        match branch(mid) {
+            Some(e) if e.force() < f => lo = mid,
+            _ => hi = mid,
+        }
+    }
+    branch(lo).map_or(f64::NAN, |e| e.extension())
+}
+
+/// The paper's asymptotic claims (Section 3.2.2), at equal force: the gap
+/// in extension to the claimed neighbour shrinks (by ≥ 2× from
+/// F/(8π)² = 3 to 30) and at F/(8π)² = 30 is below 5 % of the gap to the
+/// other candidate (every branch tends to Δz → 1, so shrinking alone would
+/// not discriminate):
+/// - α_n approaches υ_(n+1) (not υ_n), and ϑ_j approaches υ_(j+1);
+/// - the υ secondary arms approach ϑ_(j−1) (lower arm, a coil lost) and
+///   ϑ_(j+1) (upper arm, a coil gained); both α arms approach ϑ_j.
+#[test]
+fn asymptotics_of_the_branches_as_the_paper_states() {
+    type B = Box<dyn Fn(f64) -> Option<Elastica>>;
+    let scale = (8.0 * core::f64::consts::PI).powi(2);
+    let md = |x: f64| Modulus::from_complement(x.exp()).unwrap();
+    let gap = |a: &B, b: &B, f: f64| {
+        (extension_at(a.as_ref(), f * scale, -1e-9) - extension_at(b.as_ref(), f * scale, -1e-9))
+            .abs()
+    };
+    let theta = |j: u32| -> B {
+        Box::new(move |x: f64| {
+            Elastica::nonsymmetric_with(j, j, md(x))
+                .ok()?
+                .first()
+                .copied()
+        })
+    };
+    let alpha = |n: u32| -> B {
+        Box::new(move |x: f64| Some(Elastica::symmetric_with(n, md(x)).ok()?.alpha))
+    };
+    let upsilon = |n: u32| -> B {
+        Box::new(move |x: f64| Some(Elastica::symmetric_with(n, md(x)).ok()?.upsilon))
+    };
+    let arm = |j: u32, a: Arm| -> B {
+        Box::new(move |x: f64| Elastica::secondary_arm(4, j, a, md(x)).ok())
+    };
+    let cases: Vec<(&str, B, B, B)> = vec![
+        ("α_4 → υ_5 (not υ_4)", alpha(4), upsilon(5), upsilon(4)),
+        ("ϑ_3 → υ_4 (not υ_3)", theta(3), upsilon(4), upsilon(3)),
+        (
+            "υ secondary j=3 lower → ϑ_2 (not ϑ_4)",
+            arm(3, Arm::Lower),
+            theta(2),
+            theta(4),
+        ),
+        (
+            "υ secondary j=3 upper → ϑ_4 (not ϑ_2)",
+            arm(3, Arm::Upper),
+            theta(4),
+            theta(2),
+        ),
+        (
+            "υ secondary j=2 lower → ϑ_1 (not ϑ_3)",
+            arm(2, Arm::Lower),
+            theta(1),
+            theta(3),
+        ),
+        (
+            "α secondary j=5 lower → ϑ_5 (not ϑ_6)",
+            arm(5, Arm::Lower),
+            theta(5),
+            theta(6),
+        ),
+        (
+            "α secondary j=5 upper → ϑ_5 (not ϑ_4)",
+            arm(5, Arm::Upper),
+            theta(5),
+            theta(4),
+        ),
+    ];
+    for (name, a, near, far) in &cases {
+        let (g3, g30, other) = (gap(a, near, 3.0), gap(a, near, 30.0), gap(a, far, 30.0));
+        eprintln!("{name}: gap {g3:.2e} → {g30:.2e}, other {other:.2e}");
+        assert!(
+            g30 < 0.5 * g3 && g30 < 0.05 * other,
+            "{name}: {g3} → {g30}, other {other}"
+        );
+    }
+}
