@@ -20,25 +20,30 @@ const TOL_RF: f64 = 0.1;
 /// The same for the order-11 R_D series (≤ 7.9e-18 at 0.05).
 const TOL_RD: f64 = 0.05;
 
-/// R_F(x, y, z) for x, y, z ≥ 0, at most one of them zero.
-pub(crate) fn rf(x: f64, y: f64, z: f64) -> f64 {
+/// R_F(x, y, z) for x, y, z ≥ 0 (at most one zero), given also √x, √y,
+/// √z (the callers know them, which saves the square roots of the first
+/// duplication step).
+#[inline]
+pub(crate) fn rf_roots(x: f64, y: f64, z: f64, sx: f64, sy: f64, sz: f64) -> f64 {
     let (x0, y0) = (x, y);
     let (mut x, mut y, mut z) = (x, y, z);
-    let a0 = (x + y + z) / 3.0;
+    let (mut sx, mut sy, mut sz) = (sx, sy, sz);
+    let a0 = (x + y + z) * (1.0 / 3.0);
     let mut a = a0;
-    let q = (a0 - x).abs().max((a0 - y).abs()).max((a0 - z).abs()) / TOL_RF;
+    let q = (a0 - x).abs().max((a0 - y).abs()).max((a0 - z).abs()) * (1.0 / TOL_RF);
     let mut scale = 1.0; // 4^-n
     while scale * q >= a {
-        let (sx, sy, sz) = (x.sqrt(), y.sqrt(), z.sqrt());
         let lambda = sx * (sy + sz) + sy * sz;
         x = 0.25 * (x + lambda);
         y = 0.25 * (y + lambda);
         z = 0.25 * (z + lambda);
         a = 0.25 * (a + lambda);
         scale *= 0.25;
+        (sx, sy, sz) = (x.sqrt(), y.sqrt(), z.sqrt());
     }
-    let xx = (a0 - x0) * scale / a;
-    let yy = (a0 - y0) * scale / a;
+    let inv = scale / a;
+    let xx = (a0 - x0) * inv;
+    let yy = (a0 - y0) * inv;
     let zz = -(xx + yy);
     let e2 = xx * yy - zz * zz;
     let e3 = xx * yy * zz;
@@ -46,20 +51,21 @@ pub(crate) fn rf(x: f64, y: f64, z: f64) -> f64 {
 }
 
 /// R_F(x, y, z) and R_D(x, y, z) from one duplication loop (the steps are
-/// the same for both; R_D adds its sum and uses its own weighted mean).
-/// x, y ≥ 0 (at most one zero), z > 0.
-pub(crate) fn rf_rd(x: f64, y: f64, z: f64) -> (f64, f64) {
+/// the same for both; R_D adds its sum and uses its own weighted mean),
+/// given also √x, √y, √z. x, y ≥ 0 (at most one zero), z > 0.
+#[inline]
+pub(crate) fn rf_rd_roots(x: f64, y: f64, z: f64, sx: f64, sy: f64, sz: f64) -> (f64, f64) {
     let (x0, y0) = (x, y);
     let (mut x, mut y, mut z) = (x, y, z);
-    let af0 = (x + y + z) / 3.0;
-    let ad0 = (x + y + 3.0 * z) / 5.0;
+    let (mut sx, mut sy, mut sz) = (sx, sy, sz);
+    let af0 = (x + y + z) * (1.0 / 3.0);
+    let ad0 = (x + y + 3.0 * z) * 0.2;
     let (mut af, mut ad) = (af0, ad0);
-    let qf = (af0 - x).abs().max((af0 - y).abs()).max((af0 - z).abs()) / TOL_RF;
-    let qd = (ad0 - x).abs().max((ad0 - y).abs()).max((ad0 - z).abs()) / TOL_RD;
+    let qf = (af0 - x).abs().max((af0 - y).abs()).max((af0 - z).abs()) * (1.0 / TOL_RF);
+    let qd = (ad0 - x).abs().max((ad0 - y).abs()).max((ad0 - z).abs()) * (1.0 / TOL_RD);
     let mut scale = 1.0;
     let mut sum = 0.0;
     while scale * qf >= af || scale * qd >= ad {
-        let (sx, sy, sz) = (x.sqrt(), y.sqrt(), z.sqrt());
         let lambda = sx * (sy + sz) + sy * sz;
         sum += scale / (sz * (z + lambda));
         x = 0.25 * (x + lambda);
@@ -68,13 +74,16 @@ pub(crate) fn rf_rd(x: f64, y: f64, z: f64) -> (f64, f64) {
         af = 0.25 * (af + lambda);
         ad = 0.25 * (ad + lambda);
         scale *= 0.25;
+        (sx, sy, sz) = (x.sqrt(), y.sqrt(), z.sqrt());
     }
-    let xx = (af0 - x0) * scale / af;
-    let yy = (af0 - y0) * scale / af;
+    let inv = scale / af;
+    let xx = (af0 - x0) * inv;
+    let yy = (af0 - y0) * inv;
     let zz = -(xx + yy);
     let rf = (1.0 + rf_series(xx * yy - zz * zz, xx * yy * zz)) / af.sqrt();
-    let xx = (ad0 - x0) * scale / ad;
-    let yy = (ad0 - y0) * scale / ad;
+    let inv = scale / ad;
+    let xx = (ad0 - x0) * inv;
+    let yy = (ad0 - y0) * inv;
     let zz = -(xx + yy) / 3.0;
     let rd = scale * (1.0 + rd_terms(xx, yy, zz)) / (ad * ad.sqrt()) + 3.0 * sum;
     (rf, rd)

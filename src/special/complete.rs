@@ -9,11 +9,11 @@ use super::poly::Poly;
 /// exact), so that a modulus given by its complement loses nothing.
 #[inline(always)]
 fn piece<const N: usize>(
-    table: &'static [Poly<N>; 34],
+    table: &'static [Poly<N>; 84],
     m: f64,
     mc: f64,
 ) -> (&'static Poly<N>, f64) {
-    let slot = ((m * 80.0) as usize).min(PIECE_OF.len() - 1);
+    let slot = ((m * 320.0) as usize).min(PIECE_OF.len() - 1);
     let p = &table[usize::from(PIECE_OF[slot])];
     // Branch-free select (m < ½ is a coin toss on uniform input).
     let mask = 0u64.wrapping_sub(u64::from(m < 0.5));
@@ -27,7 +27,7 @@ fn piece<const N: usize>(
 #[inline]
 pub(crate) fn ellip_k_dd(modulus: Modulus) -> (f64, f64) {
     let (m, mc) = (modulus.m(), modulus.complement());
-    if m < 0.9 {
+    if m < 0.95 {
         let (p, t) = piece(&K_PIECES, m, mc);
         p.eval_t(t)
     } else if mc == 0.0 {
@@ -61,6 +61,10 @@ pub(crate) fn ellip_k_dd(modulus: Modulus) -> (f64, f64) {
 /// K(0) = π/2; K(1) = +∞ (m₁ = 0); K ~ ½ ln(16/m₁) as m₁ → 0, finite for
 /// every m₁ > 0 including subnormals.
 ///
+/// # Accuracy
+/// Max 0.88 ulp, median 0.18, over 2012 moduli with m₁ down to 1e-300.
+/// See the [module docs](crate::special#accuracy) for the table.
+///
 /// # Examples
 /// ```
 /// use hockle::special::{Modulus, ellip_k};
@@ -74,6 +78,7 @@ pub(crate) fn ellip_k_dd(modulus: Modulus) -> (f64, f64) {
 /// DLMF §19.2, §19.5, §19.12; T. Fukushima, Celest. Mech. Dyn. Astr. 105
 /// (2009) 305–328 (piecewise series for K and E).
 #[must_use]
+#[inline]
 pub fn ellip_k(modulus: Modulus) -> f64 {
     let (hi, lo) = ellip_k_dd(modulus);
     hi + lo
@@ -91,6 +96,10 @@ pub fn ellip_k(modulus: Modulus) -> f64 {
 /// # Special cases
 /// E(0) = π/2; E(1) = 1.
 ///
+/// # Accuracy
+/// Max 0.53 ulp, median 0.02, over 2012 moduli with m₁ down to 1e-300.
+/// See the [module docs](crate::special#accuracy) for the table.
+///
 /// # Examples
 /// ```
 /// use hockle::special::{Modulus, ellip_e};
@@ -103,9 +112,10 @@ pub fn ellip_k(modulus: Modulus) -> f64 {
 /// # References
 /// DLMF §19.2, §19.5, §19.12.
 #[must_use]
+#[inline]
 pub fn ellip_e(modulus: Modulus) -> f64 {
     let (m, mc) = (modulus.m(), modulus.complement());
-    if m < 0.9 {
+    if m < 0.95 {
         let (p, t) = piece(&E_PIECES, m, mc);
         let (hi, lo) = p.eval_t(t);
         hi + lo

@@ -1,25 +1,46 @@
 //! Incomplete elliptic integrals F(φ, k) and E(φ, k) for any real φ.
 
 use super::Modulus;
-use super::carlson::{rf, rf_rd};
+use super::carlson::{rf_rd_roots, rf_roots};
 use super::complete::{ellip_e, ellip_k};
 
 /// π split as a double-double: `PI_HI + PI_LO` = π to ~1e-32.
 pub(crate) const PI_HI: f64 = core::f64::consts::PI;
 pub(crate) const PI_LO: f64 = 1.224_646_799_147_353_2e-16;
 
-/// φ = jπ + r with |r| ≤ π/2 (up to rounding), r accurate to ~1 ulp of r
-/// for |j| < 2⁵³: j·π is formed as a double-double, and φ − fl(jπ) is exact
-/// by Sterbenz's lemma.
+/// x rounded to the nearest integer, ties to even, by the 1.5·2⁵² trick for
+/// |x| < 2⁵¹ (without SSE4.1 `f64::round_ties_even` is a library call).
+#[inline(always)]
+pub(crate) fn round_ties_even(x: f64) -> f64 {
+    const MAGIC: f64 = 6_755_399_441_055_744.0;
+    if x.abs() < 2_251_799_813_685_248.0 {
+        (x + MAGIC) - MAGIC
+    } else {
+        x.round_ties_even()
+    }
+}
+
+/// π in three parts (Cody–Waite): `PI_A` and `PI_B` have 33 significant
+/// bits, so j·PI_A and j·PI_B are exact for |j| < 2²⁰; the sum is π to
+/// 2e-37.
+const PI_A: f64 = 3.141_592_653_468_251_2;
+const PI_B: f64 = 1.215_420_101_260_793_2e-10;
+const PI_C: f64 = 4.044_532_497_591_901e-21;
+
+/// φ = jπ + r with |r| ≤ π/2 (up to rounding), r accurate to ~1 ulp of r:
+/// φ − j·PI_A is exact (Sterbenz), the later parts only round once each.
+/// Beyond |j| = 2²⁰ the products are formed exactly with FMA instead.
 pub(crate) fn reduce_pi(phi: f64) -> (f64, f64) {
-    let j = (phi / PI_HI).round_ties_even();
+    let j = round_ties_even(phi / PI_HI);
     if j == 0.0 {
         return (0.0, phi);
     }
+    if j.abs() < 1_048_576.0 {
+        return (j, ((phi - j * PI_A) - j * PI_B) - j * PI_C);
+    }
     let p = j * PI_HI;
     let e = j.mul_add(PI_HI, -p); // exact error of j·PI_HI
-    let r = (phi - p) - e - j * PI_LO;
-    (j, r)
+    (j, (phi - p) - e - j * PI_LO)
 }
 
 /// φ = jπ + r as [`reduce_pi`], with s = sin|r|, c = cos|r| ≥ 0: when
@@ -43,16 +64,20 @@ fn reduce_pi_sin_cos(phi: f64) -> (f64, f64, f64, f64) {
 /// F  = s R_F(c², Δ², 1)                  DLMF 19.25.5
 /// E  = m₁ F + (m m₁/3) s³ R_D(c², 1, Δ²) + m s c / Δ      DLMF 19.25.9
 /// ```
+#[inline]
 fn f_direct(s: f64, c: f64, mc: f64) -> f64 {
     let c2 = c * c;
-    s * rf(c2, c2 + mc * s * s, 1.0)
+    let d2 = c2 + mc * s * s;
+    s * rf_roots(c2, d2, 1.0, c, d2.sqrt(), 1.0)
 }
 
+#[inline]
 fn e_direct(s: f64, c: f64, m: f64, mc: f64) -> f64 {
     let c2 = c * c;
     let d2 = c2 + mc * s * s;
-    let (rf, rd) = rf_rd(c2, 1.0, d2);
-    mc * (s * rf) + m * mc / 3.0 * s * s * s * rd + m * s * c / d2.sqrt()
+    let d = d2.sqrt();
+    let (rf, rd) = rf_rd_roots(c2, 1.0, d2, c, 1.0, d);
+    mc * (s * rf) + m * mc / 3.0 * s * s * s * rd + m * s * c / d
 }
 
 /// Near π/2 (c² < m₁ s²/4) the complementary amplitude ψ, tan ψ = cot r / k′
@@ -110,6 +135,11 @@ pub(crate) fn e_reduced(s: f64, c: f64, modulus: Modulus) -> f64 {
 /// NaN or infinite φ gives NaN. F(0, k) = 0; F(φ, 0) = φ; F is odd in φ.
 /// For k = 1 (m₁ = 0), F = atanh(sin φ) for |φ| < π/2 and ±∞ beyond.
 ///
+/// # Accuracy
+/// Max 1.83 ulp (1.18 ulp normalised by 1 + the condition number in φ)
+/// over 2120 points, |φ| ≤ 100, m₁ down to 1e-300.
+/// See the [module docs](crate::special#accuracy) for the table.
+///
 /// # Examples
 /// ```
 /// use hockle::special::{Modulus, ellip_f, ellip_k};
@@ -123,6 +153,7 @@ pub(crate) fn e_reduced(s: f64, c: f64, modulus: Modulus) -> f64 {
 /// # References
 /// DLMF §19.2, §19.25; B. C. Carlson, Numer. Algorithms 10 (1995) 13–26.
 #[must_use]
+#[inline]
 pub fn ellip_f(phi: f64, modulus: Modulus) -> f64 {
     if !phi.is_finite() {
         return f64::NAN;
@@ -151,6 +182,11 @@ pub fn ellip_f(phi: f64, modulus: Modulus) -> f64 {
 /// NaN or infinite φ gives NaN. E(0, k) = 0; E(φ, 0) = φ; E(φ, 1) = sin φ on
 /// [−π/2, π/2]; E is odd in φ.
 ///
+/// # Accuracy
+/// Max 1.85 ulp (1.35 normalised) over 2120 points, |φ| ≤ 100, m₁ down
+/// to 1e-300.
+/// See the [module docs](crate::special#accuracy) for the table.
+///
 /// # Examples
 /// ```
 /// use hockle::special::{Modulus, ellip_e_inc};
@@ -162,6 +198,7 @@ pub fn ellip_f(phi: f64, modulus: Modulus) -> f64 {
 /// # References
 /// DLMF §19.2, §19.25.
 #[must_use]
+#[inline]
 pub fn ellip_e_inc(phi: f64, modulus: Modulus) -> f64 {
     if !phi.is_finite() {
         return f64::NAN;

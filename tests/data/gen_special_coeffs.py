@@ -5,11 +5,11 @@ Run from the repository root:  python3 tests/data/gen_special_coeffs.py
 (mpmath, 60 digits; deterministic).  Every coefficient is an exact Taylor
 coefficient, not a fit:
 
-* 0 <= m < 0.9: Taylor polynomials in t = m - c about the centre c of each
+* 0 <= m < 0.95: Taylor polynomials in t = m - c about the centre c of each
   interval, from the closed-form derivatives of the Gauss series
       K(m) = (pi/2) 2F1(1/2, 1/2; 1; m),  E(m) = (pi/2) 2F1(-1/2, 1/2; 1; m)
       d^j/dm^j 2F1(a, b; c; m) = (a)_j (b)_j / (c)_j  2F1(a+j, b+j; c+j; m).
-* 0.9 <= m <= 1 (m1 = 1 - m <= 0.1): DLMF 19.12.1 and 19.12.2,
+* 0.95 <= m <= 1 (m1 = 1 - m <= 0.05): DLMF 19.12.1 and 19.12.2,
       K = PK(m1) + L QK(m1),  E = PE(m1) + L QE(m1),  L = -ln m1, with
       QK = 1/2 sum a_n m1^n,  PK = sum a_n d_n m1^n,
       QE = 1/4 sum b_n m1^(n+1),
@@ -17,7 +17,7 @@ coefficient, not a fit:
       written as E = 1 + m1 (SE(m1) + L RE(m1)), SE = (PE - 1)/m1, RE = QE/m1,
       a_n = ((1/2)_n / n!)^2,  b_n = (1/2)_n (3/2)_n / ((2)_n n!),
       d_n = psi(1+n) - psi(1/2+n);
-  each series (all terms positive) is re-expanded about m1 = 0.05.
+  each series (all terms positive) is re-expanded about m1 = 0.025.
 
 The degree of each polynomial is the smallest whose neglected tail is below
 2^-60 of the value over the interval.  The constant term is split into
@@ -31,14 +31,17 @@ NSER = 400  # terms of the m1 series (0.1^400: far beyond any need)
 
 
 def intervals():
-    """[lo, hi) pieces of [0, 0.9]: width 0.05, 0.025, 0.0125 as m nears 1."""
+    """[lo, hi) pieces of [0, 0.95): width 1/40, 1/80, 1/160, 1/320 on
+    [0, .5), [.5, .7), [.7, .9), [.9, .95)."""
     out = []
-    for i in range(10):
-        out.append((mpf(i) / 20, mpf(i + 1) / 20))
-    for i in range(8):
-        out.append((mpf(1) / 2 + mpf(i) / 40, mpf(1) / 2 + mpf(i + 1) / 40))
+    for i in range(20):
+        out.append((mpf(i) / 40, mpf(i + 1) / 40))
     for i in range(16):
-        out.append((mpf(7) / 10 + mpf(i) / 80, mpf(7) / 10 + mpf(i + 1) / 80))
+        out.append((mpf(1) / 2 + mpf(i) / 80, mpf(1) / 2 + mpf(i + 1) / 80))
+    for i in range(32):
+        out.append((mpf(7) / 10 + mpf(i) / 160, mpf(7) / 10 + mpf(i + 1) / 160))
+    for i in range(16):
+        out.append((mpf(9) / 10 + mpf(i) / 320, mpf(9) / 10 + mpf(i + 1) / 320))
     return out
 
 
@@ -95,7 +98,7 @@ def main():
     out.append(f"pub(super) const NK: usize = {nk};")
     out.append(f"/// Fixed length of the E pieces.")
     out.append(f"pub(super) const NE: usize = {ne};")
-    out.append(f"/// K on the pieces of [0, 0.9) (see `complete.rs` for the index).")
+    out.append(f"/// K on the pieces of [0, 0.95) (see `complete.rs` for the index).")
     out.append(f"pub(super) static K_PIECES: [Poly<NK>; {len(ks)}] = [")
     out += [poly_rust(c, k, nk) for c, k in ks]
     out.append("];")
@@ -103,10 +106,15 @@ def main():
     out.append(f"pub(super) static E_PIECES: [Poly<NE>; {len(es)}] = [")
     out += [poly_rust(c, e, ne) for c, e in es]
     out.append("];")
-    # Piece index from floor(80 m): widths 4/80, 2/80, 1/80 on [0, .5), [.5, .7), [.7, .9).
-    lut = [i // 4 for i in range(40)] + [10 + (i - 40) // 2 for i in range(40, 56)] + [18 + (i - 56) for i in range(56, 72)]
-    out.append("/// Piece index of m ∈ [0, 0.9) from ⌊80 m⌋.")
-    out.append(f"pub(super) static PIECE_OF: [u8; 72] = {lut};")
+    # Piece index from floor(320 m): widths 8, 4, 2, 1 (/320) on [0, .5), [.5, .7), [.7, .9), [.9, .95).
+    lut = (
+        [i // 8 for i in range(160)]
+        + [20 + (i - 160) // 4 for i in range(160, 224)]
+        + [36 + (i - 224) // 2 for i in range(224, 288)]
+        + [68 + (i - 288) for i in range(288, 304)]
+    )
+    out.append("/// Piece index of m ∈ [0, 0.95) from ⌊320 m⌋.")
+    out.append(f"pub(super) static PIECE_OF: [u8; {len(lut)}] = {lut};")
     # m1 series.
     half = mpf(1) / 2
     a = [(rf(half, n) / factorial(n)) ** 2 for n in range(NSER)]
@@ -122,7 +130,7 @@ def main():
         L = -log(x)
         assert abs(ev(pk) + L * ev(qk) - ellipk(1 - x)) < mpf(10) ** -50
         assert abs(ev(pe) + L * ev(qe) - ellipe(1 - x)) < mpf(10) ** -50
-    c, h = mpf("0.05"), mpf("0.05")
+    c, h = mpf("0.025"), mpf("0.025")
     # E = 1 + m1 (SE + L RE): factor m1 out of PE - 1 and QE so that E - 1
     # keeps its relative accuracy as m1 -> 0 (QE(0) = 0 exactly).
     se = pe[2:] and [pe[k + 1] for k in range(NSER - 1)]
@@ -130,7 +138,7 @@ def main():
     names = {"PK": pk, "QK": qk, "SE": se, "RE": re}
     for name, s in names.items():
         coefs = truncate(shift(s, c, 60), h, mpf(1))  # PK, QK >= 1/2; E >= 1 absorbs m1 SE, m1 RE
-        out.append(f"/// {name}(m1) about m1 = 0.05 (DLMF 19.12.1–2).")
+        out.append(f"/// {name}(m1) about m1 = 0.025 (DLMF 19.12.1–2).")
         out.append(f"pub(super) static {name}: Poly<{len(coefs)}> =")
         out.append(poly_rust(c, coefs, len(coefs)).strip().rstrip(",") + ";")
     with open("src/special/coeffs.rs", "w") as f:
