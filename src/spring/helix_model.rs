@@ -4,7 +4,7 @@ use crate::curve::{ForceExtension, ForcePoint};
 use crate::error::{Error, Result};
 use crate::helix::Helix;
 
-use super::{Model, Pull, Spring, check_target};
+use super::{Model, Response, Spring, check_target};
 
 /// The spring as an exact helix with zero axial moment throughout
 /// ([`crate::helix`]): instant, exact for θ0 far from 90° and for isotropic
@@ -49,7 +49,7 @@ impl Model for HelixModel {
     /// # Errors
     /// [`Error::InvalidArgument`] for a bad target, or if the spring's
     /// intrinsic strains are not those of its helix (the model assumes them).
-    fn pull(&self, spring: &Spring, max_force_scaled: f64) -> Result<Pull> {
+    fn pull(&self, spring: &Spring, max_force_scaled: f64) -> Result<Response> {
         let target = check_target(max_force_scaled)? * spring.force_scale();
         if !spring.is_helical() {
             return Err(Error::InvalidArgument {
@@ -77,7 +77,7 @@ impl Model for HelixModel {
                 parameter: theta,
             });
         }
-        Ok(Pull::from_curve(self.name(), curve))
+        Ok(Response::from_curve(self.name(), curve))
     }
 }
 

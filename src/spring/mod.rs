@@ -1,4 +1,4 @@
-//! The scene: one [`Spring`], answered by every model with a [`Pull`] whose
+//! The scene: one [`Spring`], answered by every model with a [`Response`] whose
 //! curve is a [`ForceExtension`].
 //!
 //! A user describes the spring once and picks the cheapest model the
@@ -8,7 +8,7 @@
 //! |---|---|---|
 //! | [`HelixModel`] | the spring stays an exact helix (the paper's Appendix) | microseconds |
 //!
-//! Every model implements [`Model`]; a [`Pull`] gives the curve, its folds,
+//! Every model implements [`Model`]; a [`Response`] gives the curve, its folds,
 //! the pop-outs, the stretches between them, their loop counts and the
 //! jumps under force or displacement control.
 //!
@@ -23,16 +23,16 @@
 //! ```
 
 mod helix_model;
-mod pull;
+mod response;
 mod scene;
 
 pub use helix_model::HelixModel;
-pub use pull::{BranchMatch, Control, Direction, Fold, FoldKind, Jump, PopOut, Pull, Stretch};
+pub use response::{BranchMatch, Control, Direction, Jump, PopOut, Response, Stretch};
 pub use scene::Spring;
 
 use crate::error::Result;
 
-/// A model of a pulled spring: answers [`Spring`]s with [`Pull`]s.
+/// A model of a pulled spring: answers [`Spring`]s with [`Response`]s.
 pub trait Model {
     /// A short name for tables and labels.
     fn name(&self) -> &str;
@@ -43,7 +43,7 @@ pub trait Model {
     /// # Errors
     /// If the model cannot represent the spring, or `max_force_scaled` is not
     /// positive and finite; each model documents its own.
-    fn pull(&self, spring: &Spring, max_force_scaled: f64) -> Result<Pull>;
+    fn pull(&self, spring: &Spring, max_force_scaled: f64) -> Result<Response>;
 }
 
 pub(crate) fn check_target(max_force_scaled: f64) -> Result<f64> {
