@@ -48,7 +48,4 @@ pub use solution::{NewtonStats, Solution};
 pub use solver::{Collocation, InitialGuess};
 pub use system::LinearSolver;
 
-#[allow(unused_imports)] // used by continuation (next commit)
-pub(crate) use solver::{NewtonOptions, finish, newton, scaled_norm, state_from_guess};
-#[allow(unused_imports)]
-pub(crate) use tableau::Tableau;
+pub(crate) use solver::{NewtonOptions, finish, newton};

@@ -372,7 +372,6 @@ impl Collocation {
         self
     }
 
-    #[allow(dead_code)]
     pub(crate) fn free(&self) -> &[usize] {
         &self.free
     }
@@ -384,7 +383,6 @@ impl Collocation {
         }
     }
 
-    #[allow(dead_code)]
     pub(crate) fn linear(&self) -> LinearSolver {
         self.linear
     }

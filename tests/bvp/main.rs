@@ -3,6 +3,7 @@
 
 #[path = "../common/mod.rs"]
 mod common;
+#[allow(dead_code)]
 mod problems;
 
 use hockle::bvp::{Collocation, LinearSolver, Mesh};
