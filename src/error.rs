@@ -79,8 +79,95 @@ pub enum Error {
         fold: f64,
     },
     // ----- bvp -----------------------------------------------------------
+    /// The problem's counts do not give a square system.
+    #[error(
+        "ill-posed problem: {conditions} boundary and integral conditions (plus {extra} extra rows) \
+         but {unknowns} = dim + free parameters: the two must be equal"
+    )]
+    IllPosed {
+        /// n_bc + n_int.
+        conditions: u64,
+        /// Extra (bordering) rows added by the caller, e.g. 1 for continuation.
+        extra: u64,
+        /// n + the number of free parameters (+ extra).
+        unknowns: u64,
+    },
+    /// A slice or vector argument has the wrong length.
+    #[error("{name} has length {found}; it must have length {expected}")]
+    LengthMismatch {
+        /// The argument's name as documented.
+        name: &'static str,
+        /// The length given.
+        found: u64,
+        /// The length required.
+        expected: u64,
+    },
+    /// The problem returned a NaN or infinite value.
+    #[error(
+        "the {what} returned a non-finite value at s = {s}: problems must return finite values"
+    )]
+    NonFinite {
+        /// Which function: "right-hand side", "boundary conditions", "integrand", "Jacobian".
+        what: &'static str,
+        /// Where (s ∈ [0, 1]; NaN when not tied to a point).
+        s: f64,
+    },
+    /// The linearised collocation system is singular.
+    #[error(
+        "singular Jacobian in the {block} (block {index}): the linearised problem has no unique solution there"
+    )]
+    SingularJacobian {
+        /// "interval block", "mesh elimination" or "boundary block".
+        block: &'static str,
+        /// The interval or row index where the zero pivot appeared.
+        index: u64,
+    },
+    /// Newton's method stopped decreasing the correction even with damping.
+    #[error(
+        "Newton diverged at iteration {iteration}: correction {correction:e} could not be reduced by damping"
+    )]
+    NewtonDiverged {
+        /// The iteration at which damping failed.
+        iteration: u32,
+        /// The (scaled) correction norm at that point.
+        correction: f64,
+    },
+    /// Newton's method used all its iterations.
+    #[error(
+        "Newton did not converge in {iterations} iterations: correction {correction:e} > tolerance {tolerance:e}"
+    )]
+    NewtonNotConverged {
+        /// Iterations performed.
+        iterations: u32,
+        /// Last (scaled) correction norm.
+        correction: f64,
+        /// The tolerance asked for.
+        tolerance: f64,
+    },
+    /// The adaptive mesh could not meet the tolerance within the interval limit.
+    #[error(
+        "error estimate {estimate:e} > tolerance {tolerance:e} with {intervals} intervals \
+         (the limit): raise max_intervals or the tolerance"
+    )]
+    ToleranceNotMet {
+        /// The tolerance asked for.
+        tolerance: f64,
+        /// The best error estimate reached.
+        estimate: f64,
+        /// The number of intervals used.
+        intervals: u64,
+    },
 
     // ----- continuation --------------------------------------------------
-
+    /// Branch switching was asked at a point that is not a located branch point.
+    #[error(
+        "the point at arclength {arclength} is a {kind}, not a branch point: switching needs a branch point"
+    )]
+    NotABranchPoint {
+        /// The point's arclength.
+        arclength: f64,
+        /// The point's kind, in words.
+        kind: &'static str,
+    },
     // ----- rod, spring ---------------------------------------------------
 }

@@ -1,8 +1,51 @@
 //! Gauss–Legendre collocation for two-point boundary-value problems.
 //!
-//! [`Problem`] says *what* is solved; the solver (not yet implemented: see
-//! `docs/ROADMAP.md`) says *how*.
+//! [`Problem`] says *what* is solved (y′ = f(s, y, p) on [0, 1], boundary
+//! conditions g(y(0), y(1), p) = 0, integral conditions); [`Collocation`]
+//! says *how*; [`Solution`] is the result.
+//!
+//! ## The method
+//!
+//! On a mesh 0 = t₀ < … < t_N = 1 the solution is approximated by a
+//! continuous piecewise polynomial u of degree m that satisfies the ODE at the
+//! m Gauss–Legendre points z_jk = t_j + c_k h_j of every interval:
+//!
+//! ```text
+//!   u′(z_jk) = f(z_jk, u(z_jk), p),   k = 1..m, j = 0..N−1
+//!   g(u(0), u(1), p) = 0,   Σ_j h_j Σ_k b_k h(z_jk, u(z_jk), y_ref, p) = 0
+//! ```
+//!
+//! This is the m-stage Gauss Runge–Kutta method: the error is O(h^(2m)) at
+//! the mesh points (superconvergence) and O(h^(m+1)) in between
+//! (Ascher, Mattheij & Russell, *Numerical Solution of BVPs for ODEs*, §5.4).
+//!
+//! Newton's method on the collocation equations is damped by the natural
+//! monotonicity test and keeps the factorisation while it contracts (chord
+//! steps). Each Newton step costs O(N): every interval's m·n stage unknowns
+//! are condensed with a dense LU, and the remaining block-bidiagonal system
+//! in the mesh values is eliminated with partial pivoting before a small
+//! dense system in (y(0), y(1), free parameters) with the boundary and
+//! integral rows (the structure of AUTO-07p's `solvebv`). faer's sparse LU
+//! on the full system is kept as the reference ([`LinearSolver::SparseLu`]).
+//!
+//! With [`Collocation::tolerance`] the mesh is adapted: the error between
+//! mesh points behaves like C_m h^(m+1) |y^(m+1)|, so the mesh that
+//! equidistributes |y^(m+1)|^(1/(m+1)) (AUTO's IAD) with just enough
+//! intervals for the tolerance is the coarsest that meets it.
 
+#![allow(clippy::needless_range_loop)]
+
+mod mesh;
 mod problem;
+mod solution;
+mod solver;
+pub(crate) mod system;
+mod tableau;
 
+pub use mesh::Mesh;
 pub use problem::Problem;
+pub use solution::{NewtonStats, Solution};
+pub use solver::{Collocation, InitialGuess};
+pub use system::LinearSolver;
+
+pub(crate) use solver::{NewtonOptions, finish, newton};

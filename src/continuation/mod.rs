@@ -1,3 +1,53 @@
 //! Pseudo-arclength continuation of [`crate::bvp`] solution families.
 //!
-//! Not yet implemented: see `docs/ROADMAP.md`.
+//! ## Main types
+//!
+//! | type | role |
+//! |---|---|
+//! | [`Continuation`] | the settings (builder; every default listed in [`Continuation::new`]) |
+//! | [`Trace`] | a step-by-step iterator over the points of one branch |
+//! | [`Observer`] | hooks called by [`Continuation::run`] (closures and `()` implement it) |
+//! | [`Branch`] | every point computed, in order, with the [`Termination`] reason |
+//! | [`Point`] | one solution on the branch, with arclength, tangent sign, determinant sign and its [`PointKind`] |
+//!
+//! ## The method
+//!
+//! The unknowns x = (y(·), q, λ) (the solution, the solver's free parameters
+//! and the continuation parameter λ) satisfy the collocation equations
+//! F(x) = 0 plus the pseudo-arclength condition
+//!
+//! ```text
+//!   ⟨x − x₀, τ₀⟩ = Δs,   ⟨a, b⟩ = Σ_i w_i ∫₀¹ a_i(s) b_i(s) ds + θ Σ_q a_q b_q
+//! ```
+//!
+//! with x₀ the previous point, τ₀ its unit tangent in this mesh-independent
+//! integral norm (per-variable weights w, parameter weight θ), integrals by
+//! Gauss quadrature of the collocation polynomial. The predictor is
+//! x₀ + Δs τ₀; the corrector is the chord Newton of [`crate::bvp`] on the
+//! bordered system, whose factorisation at the new point also gives the new
+//! tangent τ₁ (solve [F_x; τ₀ᵀ] τ₁ = e) and the sign of
+//! det [F_x; τ₀ᵀ] (product of the pivots of every block of the condensed
+//! elimination).
+//!
+//! Step control follows AUTO-07p: after a step with k corrector iterations
+//! Δs is multiplied by 2 (k ≤ 4), 1.5 (k = 5), 1.1 (k = 6) or ½ (k ≥ 7),
+//! within [Δs_min, Δs_max]. k counts chord iterations (the factorisation of
+//! the previous point is reused) to the tight default tolerance 1e-10,
+//! including the final one: about three more than AUTO counts with fresh
+//! Jacobians at its looser EPSU = 1e-6, hence the shifted thresholds. A
+//! failed corrector, or a tangent turning by more than the maximum angle,
+//! halves Δs and retries. Folds are sign changes of dλ/ds,
+//! branch points sign changes of det [F_x; τᵀ]; both are located by the
+//! Illinois (modified regula falsi) iteration on the arclength of the step.
+//! At a branch point the second null vector φ of [F_x; τᵀ] (one solve with
+//! the nearly singular factorisation, orthogonalised against τ) starts the
+//! bifurcating branch in either direction.
+//!
+//! References: E. Doedel et al., *AUTO-07P* (2007), §§ 8–10; H. B. Keller,
+//! *Lectures on Numerical Methods in Bifurcation Problems* (1987).
+
+#![allow(clippy::needless_range_loop)]
+
+mod tracer;
+
+pub use tracer::{Branch, Continuation, Direction, Observer, Point, PointKind, Termination, Trace};

@@ -1,3 +1,329 @@
-//! The 3D anisotropic Kirchhoff rod with zero-moment ends (the paper's Section 2).
+//! The 3D anisotropic Kirchhoff rod with zero-moment ends (the paper's
+//! Section 2), as a boundary-value [`Problem`](crate::bvp::Problem).
 //!
-//! Not yet implemented: see `docs/ROADMAP.md`.
+//! ## Equations
+//!
+//! A thin, inextensible, unshearable rod of length 1 with principal bending
+//! stiffnesses A (about d1), B (about d2), torsional stiffness C and intrinsic
+//! strains u0 = (u10, u20, u30). Thirteen unknowns on s ∈ [0, 1]:
+//!
+//! ```text
+//!   y = (r, q, F, M)        r ∈ ℝ³ centreline, q ∈ ℝ⁴ quaternion (w, x, y, z),
+//!                           F ∈ ℝ³ internal force, M ∈ ℝ³ internal moment (lab frame)
+//!   d_i = R(q) e_i          R(q) the homogeneous rotation matrix of q
+//!   u   = D⁻¹ Rᵀ M + u0     D = diag(A, B, C)                      (eq:constit)
+//!   r′  = d3
+//!   q′  = ½ q ⊗ (0, u)      ⇔ d_i′ = u × d_i
+//!   F′  = 0,  M′ = F × d3                                          (eq:bal)
+//! ```
+//!
+//! For a helical spring of n coils and helix angle θ0 (angle between the
+//! tangent and the axis): u0 = 2πn (0, sin θ0, cos θ0), i.e. curvature
+//! κ0 = 2πn sin θ0 about d2 (the soft axis when A > B) and torsion
+//! τ0 = 2πn cos θ0.
+//!
+//! ## Boundary conditions (the paper's eq. bcs, with a different gauge)
+//!
+//! ```text
+//!   r(0) = 0,  x(1) = y(1) = 0,  M(0) = 0,  M_x(1) = M_y(1) = 0,
+//!   F_z = λ   (force control)   or   z(1) = Δz   (extension control),
+//!   ½(|q(0)|² − 1) = 0,
+//!   ∫₀¹ ⟨q, G q_ref⟩ ds = 0,   G q = ½ k ⊗ q.
+//! ```
+//!
+//! Twelve boundary conditions and one integral condition for 13 unknowns.
+//! |q(0)| = 1 is enough: q′ = ½ q ⊗ (0, u) conserves |q|², and Gauss
+//! collocation conserves quadratic invariants exactly, so |q| − 1 stays at
+//! the level of the Newton tolerance along the whole rod (a free accuracy
+//! check, [`Equilibrium::quaternion_drift`]).
+//!
+//! **The rotational gauge.** A rigid rotation of a solution about the force
+//! axis k is again a solution. The paper removes it with d1(1)·i = 0, which
+//! degenerates where d1(1) ∥ k (planar solutions at θ0 = 90°); the integral
+//! condition ∫x ds = 0 degenerates where the centroid crosses the axis. Both
+//! create spurious branch points whose "branch" is the rigid rotation. hockle
+//! uses the phase condition of a continuous symmetry instead: the new
+//! solution is orthogonal, in L², to the generator of the rotation applied to
+//! the reference solution q_ref (the previous continuation point). Its
+//! derivative along the symmetry orbit is ∫ |G q_ref|² ds = ¼ ∫ |q_ref|² ds =
+//! ¼, never zero, so the condition cannot degenerate anywhere on any path.
+//! Only the quaternion enters (r, F, M rotate too, but adding them would only
+//! change the weighting, not the transversality).
+//!
+//! ## Parameters
+//!
+//! `p = [λ, Δz, θ0]` ([`Rod::FORCE`], [`Rod::EXTENSION`], [`Rod::THETA0`]):
+//! the force F_z (used by force control), the prescribed extension z(1)
+//! (used by extension control) and the helix angle that sets u0 (so that one
+//! can also continue in θ0, e.g. to θ0 = 90° exactly).
+//!
+//! ## Start
+//!
+//! At λ = 0 the unstressed helix is an exact solution ([`Rod::unstressed`]):
+//! with φ = 2πn s, c = cos θ0, S = sin θ0, R0 = S/(2πn),
+//!
+//! ```text
+//!   r  = (R0 sin φ, R0 (1 − cos φ), c s)
+//!   d1 = (−sin φ, cos φ, 0),  d2 = (−c cos φ, −c sin φ, S),  d3 = (S cos φ, S sin φ, c)
+//!   q  = q_z(φ + π/2) ⊗ q_x(θ0) = (cos β cos a, cos β sin a, sin β sin a, sin β cos a),
+//!        β = (φ + π/2)/2,  a = θ0/2
+//!   F = M = 0.
+//! ```
+//!
+//! (The frame at φ = 0 is R_z(π/2) R_x(θ0), and the whole frame turns
+//! about k with φ.)
+
+mod equilibrium;
+mod measure;
+mod problem;
+mod pull;
+mod quat;
+
+use core::f64::consts::{FRAC_PI_2, PI};
+
+use nalgebra::Vector3;
+
+use crate::error::{Error, Result};
+
+pub use equilibrium::Equilibrium;
+pub use pull::{Fold, FoldKind, Pull, PullObserver, PullPoint, PullRun, PullTermination, Stretch};
+
+/// Which end load is prescribed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum Control {
+    /// The force F_z = p[[`Rod::FORCE`]] is prescribed (dead load).
+    #[default]
+    Force,
+    /// The extension z(1) = p[[`Rod::EXTENSION`]] is prescribed (hard
+    /// device); F_z is an unknown.
+    Extension,
+}
+
+impl core::fmt::Display for Control {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Control::Force => f.write_str("force control"),
+            Control::Extension => f.write_str("extension control"),
+        }
+    }
+}
+
+/// A helical spring of n coils as a 3D anisotropic Kirchhoff rod with
+/// zero-moment ends: the boundary-value problem of the module docs.
+///
+/// Validated on construction; every method afterwards is infallible.
+///
+/// ```
+/// use hockle::bvp::Problem;
+/// use hockle::rod::Rod;
+/// let rod = Rod::nikolai(4, 89.8_f64.to_radians(), 10.0, 0.05)?;
+/// assert_eq!(rod.dim(), 13);
+/// assert!((rod.torsional_stiffness() - 1.7316).abs() < 5e-5); // the paper's C/B
+/// # Ok::<(), hockle::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Rod {
+    coils: u32,
+    theta0: f64,
+    a: f64,
+    b: f64,
+    c: f64,
+    control: Control,
+}
+
+impl Rod {
+    /// Number of unknowns (r, q, F, M).
+    pub const DIM: usize = 13;
+    /// Number of parameters.
+    pub const PARAMETERS: usize = 3;
+    /// Index of the force λ = F_z in the parameter vector.
+    pub const FORCE: usize = 0;
+    /// Index of the prescribed extension z(1) in the parameter vector.
+    pub const EXTENSION: usize = 1;
+    /// Index of the helix angle θ0 in the parameter vector.
+    pub const THETA0: usize = 2;
+
+    /// A spring of `coils` turns, helix angle `theta0` (radians, between the
+    /// tangent and the axis) and stiffnesses A (about d1), B (about d2),
+    /// C (torsion), under force control.
+    ///
+    /// # Errors
+    /// [`Error::InvalidCount`] if `coils` is 0; [`Error::InvalidArgument`] if
+    /// θ0 ∉ (0, π/2] or a stiffness is not finite and positive.
+    pub fn new(coils: u32, theta0: f64, a: f64, b: f64, c: f64) -> Result<Self> {
+        if coils == 0 {
+            return Err(Error::InvalidCount {
+                name: "coils",
+                value: 0,
+                allowed: "at least 1 coil",
+            });
+        }
+        if !(theta0 > 0.0 && theta0 <= FRAC_PI_2) {
+            return Err(Error::InvalidArgument {
+                name: "theta0",
+                value: theta0,
+                allowed: "a helix angle in (0, π/2] radians",
+            });
+        }
+        for (name, v) in [("a", a), ("b", b), ("c", c)] {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(Error::InvalidArgument {
+                    name,
+                    value: v,
+                    allowed: "a finite positive stiffness",
+                });
+            }
+        }
+        Ok(Self {
+            coils,
+            theta0,
+            a,
+            b,
+            c,
+            control: Control::Force,
+        })
+    }
+
+    /// The paper's choice: B = 1, A = `a_over_b`, and C at the Nikolai bound
+    /// C = 2AB/((1 + ν)(A + B)) (equality holds for elliptical sections).
+    ///
+    /// # Errors
+    /// As [`Rod::new`], and [`Error::InvalidArgument`] if ν ∉ (−1, 1/2].
+    pub fn nikolai(coils: u32, theta0: f64, a_over_b: f64, nu: f64) -> Result<Self> {
+        if !(nu > -1.0 && nu <= 0.5) {
+            return Err(Error::InvalidArgument {
+                name: "nu",
+                value: nu,
+                allowed: "a Poisson ratio in (−1, 1/2]",
+            });
+        }
+        let c = 2.0 * a_over_b / ((1.0 + nu) * (a_over_b + 1.0));
+        Self::new(coils, theta0, a_over_b, 1.0, c)
+    }
+
+    /// The same rod under another [`Control`].
+    #[must_use]
+    pub fn with_control(mut self, control: Control) -> Self {
+        self.control = control;
+        self
+    }
+
+    /// The end-load control.
+    #[must_use]
+    pub fn control(&self) -> Control {
+        self.control
+    }
+
+    /// Number of coils n.
+    #[must_use]
+    pub fn coils(&self) -> u32 {
+        self.coils
+    }
+
+    /// The helix angle θ0 of the unstressed rod (radians).
+    #[must_use]
+    pub fn theta0(&self) -> f64 {
+        self.theta0
+    }
+
+    /// Bending stiffness A about d1.
+    #[must_use]
+    pub fn bending_stiffness_1(&self) -> f64 {
+        self.a
+    }
+
+    /// Bending stiffness B about d2 (the axis of intrinsic curvature).
+    #[must_use]
+    pub fn bending_stiffness_2(&self) -> f64 {
+        self.b
+    }
+
+    /// Torsional stiffness C.
+    #[must_use]
+    pub fn torsional_stiffness(&self) -> f64 {
+        self.c
+    }
+
+    /// Intrinsic strains u0 = 2πn (0, sin θ0, cos θ0) of this rod.
+    #[must_use]
+    pub fn intrinsic_strains(&self) -> Vector3<f64> {
+        Self::intrinsic_strains_at(self.coils, self.theta0)
+    }
+
+    fn intrinsic_strains_at(coils: u32, theta0: f64) -> Vector3<f64> {
+        let k = 2.0 * PI * f64::from(coils);
+        Vector3::new(0.0, k * theta0.sin(), k * theta0.cos())
+    }
+
+    fn intrinsic_strains_derivative(coils: u32, theta0: f64) -> Vector3<f64> {
+        let k = 2.0 * PI * f64::from(coils);
+        Vector3::new(0.0, k * theta0.cos(), -k * theta0.sin())
+    }
+
+    /// The parameter vector of the unstressed state: λ = 0, Δz = cos θ0, θ0.
+    #[must_use]
+    pub fn parameters_at_rest(&self) -> [f64; 3] {
+        [0.0, self.theta0.cos(), self.theta0]
+    }
+
+    /// The exact unstressed helix at arclength s (the module docs give the
+    /// formulas): an exact solution of the ODE and of every boundary and
+    /// phase condition at [`Rod::parameters_at_rest`].
+    ///
+    /// ```
+    /// use hockle::rod::Rod;
+    /// let rod = Rod::nikolai(4, 89.8_f64.to_radians(), 10.0, 0.05)?;
+    /// let y1 = rod.unstressed(1.0);
+    /// assert!(y1[0].abs() < 1e-15 && y1[1].abs() < 1e-15); // back on the axis
+    /// assert!((y1[2] - rod.theta0().cos()).abs() < 1e-15); // Δz = cos θ0
+    /// # Ok::<(), hockle::Error>(())
+    /// ```
+    #[must_use]
+    pub fn unstressed(&self, s: f64) -> [f64; 13] {
+        let n = f64::from(self.coils);
+        let phi = 2.0 * PI * n * s;
+        let (sn, cs) = self.theta0.sin_cos();
+        let r0 = sn / (2.0 * PI * n);
+        // sin φ and 1 − cos φ = 2 sin²(φ/2) without cancellation; φ reduced
+        // by whole turns so that s = 1 lands exactly on the axis.
+        let turns = (n * s).floor();
+        let phi_red = 2.0 * PI * (n * s - turns);
+        let (sp, _) = phi_red.sin_cos();
+        let sh = (phi_red / 2.0).sin();
+        let beta = (phi + FRAC_PI_2) / 2.0;
+        let (sb, cb) = beta.sin_cos();
+        let (sa, ca) = (self.theta0 / 2.0).sin_cos();
+        [
+            r0 * sp,
+            r0 * 2.0 * sh * sh,
+            cs * s,
+            cb * ca,
+            cb * sa,
+            sb * sa,
+            sb * ca,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+        ]
+    }
+}
+
+impl core::fmt::Display for Rod {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(
+            f,
+            "rod: n = {} coils, θ0 = {}°, A = {}, B = {}, C = {}, {}",
+            self.coils,
+            self.theta0.to_degrees(),
+            self.a,
+            self.b,
+            self.c,
+            self.control
+        )
+    }
+}

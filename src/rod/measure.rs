@@ -1,0 +1,199 @@
+//! Outputs of one rod equilibrium, computed on demand from a state
+//! evaluator s ↦ y(s) and the breakpoints of its piecewise representation
+//! (quadratures are composite Gauss–Legendre on those panels, exact for the
+//! piecewise polynomials of a collocation solution up to its own degree).
+
+use core::f64::consts::PI;
+
+use nalgebra::{Matrix2, Matrix3, SymmetricEigen, Vector3};
+
+use super::Rod;
+use super::quat::rot;
+
+/// 5-point Gauss–Legendre nodes and weights on [0, 1].
+const GL5: [(f64, f64); 5] = [
+    (0.046_910_077_030_668_004, 0.118_463_442_528_094_54),
+    (0.230_765_344_947_158_45, 0.239_314_335_249_683_23),
+    (0.5, 0.284_444_444_444_444_45),
+    (0.769_234_655_052_841_6, 0.239_314_335_249_683_23),
+    (0.953_089_922_969_332, 0.118_463_442_528_094_54),
+];
+
+/// ∫₀¹ g(s) ds by 5-point Gauss on each panel [b_i, b_{i+1}], `sub` equal
+/// sub-panels each.
+pub(crate) fn integrate<G: FnMut(f64) -> f64>(breaks: &[f64], sub: usize, mut g: G) -> f64 {
+    let mut total = 0.0;
+    for w in breaks.windows(2) {
+        let h = (w[1] - w[0]) / sub as f64;
+        for j in 0..sub {
+            let a = w[0] + j as f64 * h;
+            for (x, wt) in GL5 {
+                total += h * wt * g(a + h * x);
+            }
+        }
+    }
+    total
+}
+
+/// The m Gauss–Legendre weights on [0, 1] (from the moment equations
+/// Σ_k w_k c_k^i = 1/(i + 1) at the nodes c_k of the m-point rule).
+pub(crate) fn gauss_weights(m: usize) -> Vec<f64> {
+    // Nodes: roots of the shifted Legendre polynomial by Newton from the
+    // Chebyshev guesses (Golub–Welsch would do as well; m ≤ 7 here).
+    let mut nodes = Vec::with_capacity(m);
+    for k in 0..m {
+        let mut x = -((PI * (k as f64 + 0.75)) / (m as f64 + 0.5)).cos();
+        for _ in 0..100 {
+            let (mut p0, mut p1) = (1.0, x);
+            for n in 2..=m {
+                let nf = n as f64;
+                let p2 = ((2.0 * nf - 1.0) * x * p1 - (nf - 1.0) * p0) / nf;
+                p0 = p1;
+                p1 = p2;
+            }
+            let dp = m as f64 * (x * p1 - p0) / (x * x - 1.0);
+            let dx = p1 / dp;
+            x -= dx;
+            if dx.abs() < 1e-16 {
+                break;
+            }
+        }
+        nodes.push(x);
+    }
+    nodes
+        .iter()
+        .map(|&x| {
+            let (mut p0, mut p1) = (1.0, x);
+            for n in 2..=m {
+                let nf = n as f64;
+                let p2 = ((2.0 * nf - 1.0) * x * p1 - (nf - 1.0) * p0) / nf;
+                p0 = p1;
+                p1 = p2;
+            }
+            let dp = m as f64 * (x * p1 - p0) / (x * x - 1.0);
+            // Weight on [−1, 1] is 2/((1 − x²) P′²); halve for [0, 1].
+            1.0 / ((1.0 - x * x) * dp * dp)
+        })
+        .collect()
+}
+
+/// The material strains u(s) of the state y (u = D⁻¹ Rᵀ M + u0).
+pub(crate) fn strains(rod: &Rod, theta0: f64, y: &[f64; 13]) -> Vector3<f64> {
+    let r = rot(&y[3..7]);
+    let m = r.transpose() * Vector3::new(y[10], y[11], y[12]);
+    Vector3::new(m.x / rod.a, m.y / rod.b, m.z / rod.c)
+        + Rod::intrinsic_strains_at(rod.coils, theta0)
+}
+
+/// Elastic energy ½ ∫ A(u1 − u10)² + B(u2 − u20)² + C(u3 − u30)² ds.
+pub(crate) fn energy<E: Fn(f64) -> [f64; 13]>(rod: &Rod, eval: E, breaks: &[f64]) -> f64 {
+    integrate(breaks, 1, |s| {
+        let y = eval(s);
+        let m = rot(&y[3..7]).transpose() * Vector3::new(y[10], y[11], y[12]);
+        0.5 * (m.x * m.x / rod.a + m.y * m.y / rod.b + m.z * m.z / rod.c)
+    })
+}
+
+/// Distance from planarity: the largest distance of the centreline from
+/// the plane through the force axis k that fits it best in L² (planar
+/// elastica solutions lie in such a plane). `samples` are (quadrature
+/// weight, state) in order of s.
+pub(crate) fn planarity(samples: &[(f64, [f64; 13])]) -> f64 {
+    let mut s2 = Matrix2::zeros();
+    for (w, y) in samples {
+        let v = nalgebra::Vector2::new(y[0], y[1]);
+        s2 += *w * v * v.transpose();
+    }
+    let eig = SymmetricEigen::new(s2);
+    let i = if eig.eigenvalues[0] <= eig.eigenvalues[1] {
+        0
+    } else {
+        1
+    };
+    let n = eig.eigenvectors.column(i).into_owned();
+    samples
+        .iter()
+        .map(|(_, y)| (y[0] * n.x + y[1] * n.y).abs())
+        .fold(0.0, f64::max)
+}
+
+/// The tangent's turning in the plane it leaves least: the turning number
+/// (net turn / 2π, continuous) and the loop count (how many times the
+/// projected tangent passes a reference direction, an integer).
+///
+/// ν is the eigenvector of the smallest eigenvalue of ∫ d3 d3ᵀ ds (k for the
+/// unstressed helix, the normal of the plane for a planar elastica). The
+/// reference direction is the projection of the force axis k when it lies
+/// in the plane (a planar j-loop υ-shape turns its tangent through the force
+/// direction exactly j times, wherever its ends point), otherwise the
+/// in-plane direction perpendicular to the mean end tangent (the helix: n).
+pub(crate) struct Turning {
+    pub(crate) turns: f64,
+    pub(crate) loops: u32,
+}
+
+pub(crate) fn turning(samples: &[(f64, [f64; 13])]) -> Turning {
+    let mut t = Matrix3::zeros();
+    let tangents: Vec<Vector3<f64>> = samples
+        .iter()
+        .map(|(_, y)| rot(&y[3..7]).column(2).into_owned())
+        .collect();
+    for ((w, _), d3) in samples.iter().zip(&tangents) {
+        t += *w * d3 * d3.transpose();
+    }
+    let eig = SymmetricEigen::new(t);
+    let imin = eig.eigenvalues.imin();
+    let nu = eig.eigenvectors.column(imin).into_owned();
+    let seed = if nu.x.abs() < 0.9 {
+        Vector3::x()
+    } else {
+        Vector3::y()
+    };
+    let e1 = (seed - nu * nu.dot(&seed)).normalize();
+    let e2 = nu.cross(&e1);
+    let angles: Vec<f64> = tangents
+        .iter()
+        .map(|d3| d3.dot(&e2).atan2(d3.dot(&e1)))
+        .collect();
+    let kp = Vector3::z() - nu * nu.z;
+    let reference = if kp.norm() > 0.5 {
+        kp.dot(&e2).atan2(kp.dot(&e1))
+    } else {
+        let (a0, a1) = (angles[0], angles[angles.len() - 1]);
+        let mean = (a0.sin() + a1.sin()).atan2(a0.cos() + a1.cos());
+        mean + 0.5 * PI
+    };
+    let wrap = |d: f64| d - 2.0 * PI * (d / (2.0 * PI)).round();
+    let mut total = 0.0;
+    let mut crossings = 0_i64;
+    let mut unwrapped = wrap(angles[0] - reference);
+    for w in angles.windows(2) {
+        let d = wrap(w[1] - w[0]);
+        total += d;
+        let next = unwrapped + d;
+        crossings += ((next / (2.0 * PI)).floor() - (unwrapped / (2.0 * PI)).floor()).abs() as i64;
+        unwrapped = next;
+    }
+    Turning {
+        turns: (total / (2.0 * PI)).abs(),
+        loops: u32::try_from(crossings).unwrap_or(u32::MAX),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn gauss_weights_are_the_legendre_weights() {
+        // A&S Table 25.4, halved for [0, 1].
+        let w = gauss_weights(4);
+        let r = [0.173_927_422_568_726_9, 0.326_072_577_431_273_1];
+        for (a, b) in w.iter().zip([r[0], r[1], r[1], r[0]]) {
+            assert!((a - b).abs() < 1e-15, "{a} vs {b}");
+        }
+        for m in 1..=7 {
+            assert!((gauss_weights(m).iter().sum::<f64>() - 1.0).abs() < 1e-14);
+        }
+    }
+}

@@ -1,0 +1,178 @@
+//! Integration tests of the collocation BVP solver against closed forms and
+//! published values.
+
+#[path = "../common/mod.rs"]
+mod common;
+#[allow(dead_code)]
+mod problems;
+
+use hockle::bvp::{Collocation, LinearSolver, Mesh};
+use problems::{Bratu, Linear, bratu_lambda};
+
+#[test]
+fn linear_problem_is_accurate_on_a_coarse_mesh() {
+    let sol = Collocation::new()
+        .intervals(10)
+        .solve(&Linear, |_s: f64| [0.0, 0.0], &[])
+        .unwrap();
+    let mut err: f64 = 0.0;
+    for (j, t) in sol.mesh().points().iter().enumerate() {
+        let e = Linear::exact(*t);
+        err = err.max((sol.at_mesh(j)[0] - e[0]).abs());
+        err = err.max((sol.at_mesh(j)[1] - e[1]).abs());
+    }
+    // m = 4, h = 0.1: superconvergent error ~ C h^8 ≈ 1e-12 (C ~ 1e-5 for
+    // this smooth solution); 1e-11 leaves room without hiding an order loss.
+    assert!(err < 1e-11, "mesh error {err:e}");
+}
+
+#[test]
+fn bratu_lambda_one_both_branches() {
+    let lower = Collocation::new()
+        .intervals(20)
+        .solve(&Bratu { analytic: true }, |_s: f64| [0.0, 0.0], &[1.0])
+        .unwrap();
+    // Reference 0.54935272877527082 (tests/data/bvp_references.py). m = 4,
+    // h = 1/20: O(h^8) = 3.9e-11 times a constant well below 1 for this
+    // smooth solution (measured 2.1e-12), so 1e-11.
+    let e = (lower.at_mesh(0)[1] - 0.549_352_728_775_270_8).abs();
+    assert!(e < 1e-11, "{e:e}");
+    let guess = |s: f64| [14.0 * s * (1.0 - s), 14.0 * (1.0 - 2.0 * s)];
+    let upper = Collocation::new()
+        .intervals(40)
+        .solve(&Bratu { analytic: false }, guess, &[1.0])
+        .unwrap();
+    // y'(0) = 10.846899019389 on the upper branch; finite-difference
+    // Jacobian only changes the Newton path, not the converged point.
+    // Reference 10.846899019389452; the upper solution is steeper, h = 1/40
+    // gives O(h^8)·C; 1e-9 relative to a value of 10.8.
+    let e = (upper.at_mesh(0)[1] - 10.846_899_019_389_452).abs();
+    assert!(e < 1e-8, "{e:e}");
+}
+
+#[test]
+fn bratu_exact_solution_check() {
+    // Independent reference: the closed form with θ from a bisection.
+    let theta = {
+        let (mut a, mut b) = (0.0_f64, 4.0 * 2.0_f64.ln() * 2.0); // lower branch θ < θ*
+        for _ in 0..200 {
+            let c = 0.5 * (a + b);
+            if bratu_lambda(c) < 1.0 { a = c } else { b = c }
+        }
+        0.5 * (a + b)
+    };
+    let sol = Collocation::new()
+        .intervals(16)
+        .solve(&Bratu { analytic: true }, |_s: f64| [0.0, 0.0], &[1.0])
+        .unwrap();
+    let exact = |s: f64| -2.0 * (((s - 0.5) * theta / 2.0).cosh() / (theta / 4.0).cosh()).ln();
+    for s in [0.13, 0.5, 0.77] {
+        // Between mesh points the error is O(h^(m+1)) = O(16^-5) ~ 1e-6·C.
+        assert!((sol.eval(s)[0] - exact(s)).abs() < 1e-7);
+    }
+}
+
+#[test]
+fn sparse_reference_agrees_with_condensed() {
+    let p = Bratu { analytic: true };
+    let guess = |s: f64| [14.0 * s * (1.0 - s), 14.0 * (1.0 - 2.0 * s)];
+    let a = Collocation::new()
+        .intervals(30)
+        .solve(&p, guess, &[1.0])
+        .unwrap();
+    let b = Collocation::new()
+        .intervals(30)
+        .linear_solver(LinearSolver::SparseLu)
+        .solve(&p, guess, &[1.0])
+        .unwrap();
+    for j in 0..=30 {
+        for i in 0..2 {
+            // Both converge the same discrete equations to Newton tolerance
+            // 1e-10 (then quadratically further): agreement far below 1e-9.
+            assert!((a.at_mesh(j)[i] - b.at_mesh(j)[i]).abs() < 1e-9);
+        }
+    }
+    let _ = Mesh::uniform(3).unwrap();
+}
+
+/// Max error at the mesh points and at θ = 0.3 inside every interval (the
+/// leading O(h^(m+1)) error term vanishes at θ = ½ for even m, so the
+/// midpoint would overstate the order).
+fn linear_errors(m: usize, n: usize) -> (f64, f64) {
+    let sol = Collocation::new()
+        .points(m)
+        .intervals(n)
+        .newton_tolerance(1e-14)
+        .solve(&Linear, |_s: f64| [0.0, 0.0], &[])
+        .unwrap();
+    let (mut at, mut between) = (0.0_f64, 0.0_f64);
+    let pts = sol.mesh().points().to_vec();
+    for (j, t) in pts.iter().enumerate() {
+        for i in 0..2 {
+            at = at.max((sol.at_mesh(j)[i] - Linear::exact(*t)[i]).abs());
+        }
+        if j < n {
+            let s = t + 0.3 * (pts[j + 1] - t);
+            for i in 0..2 {
+                between = between.max((sol.eval(s)[i] - Linear::exact(s)[i]).abs());
+            }
+        }
+    }
+    (at, between)
+}
+
+#[test]
+fn convergence_orders_match_theory() {
+    // Meshes chosen so that the finer error stays above 1e-13 (rounding).
+    for (m, n) in [(2usize, 8usize), (3, 4), (4, 2), (5, 1)] {
+        let (a1, b1) = linear_errors(m, n);
+        let (a2, b2) = linear_errors(m, 2 * n);
+        let order_at = (a1 / a2).log2();
+        let order_between = (b1 / b2).log2();
+        eprintln!(
+            "m={m} N={n}: {order_at:.3} {order_between:.3} ({a1:e} → {a2:e}) ({b1:e} → {b2:e})"
+        );
+        // Theory: 2m at mesh points, m + 1 between (Ascher–Mattheij–Russell
+        // §5.4); ±0.3 allows the pre-asymptotic O(h) correction.
+        assert!(
+            (order_at - 2.0 * m as f64).abs() < 0.3,
+            "m={m}: order at mesh points {order_at} ({a1:e} → {a2:e})"
+        );
+        assert!(
+            (order_between - (m + 1) as f64).abs() < 0.3,
+            "m={m}: order between {order_between} ({b1:e} → {b2:e})"
+        );
+    }
+}
+
+#[test]
+fn troesch_mu5_uniform_and_mu10_adaptive() {
+    use problems::Troesch;
+    // μ = 5 on a uniform mesh of 40 intervals; reference 0.045750461406318739
+    // (closed form through sc(μx|m), tests/data/bvp_references.py).
+    let e_at = |n: usize| {
+        let sol = Collocation::new()
+            .intervals(n)
+            .solve(&Troesch, |s: f64| [s, 1.0], &[5.0])
+            .unwrap();
+        ((sol.at_mesh(0)[1] - 0.045_750_461_406_318_74).abs(), sol)
+    };
+    let (e40, _) = e_at(40);
+    assert!(e40 < 1e-8, "mu=5, N=40: {e40:e}");
+    let (e, sol) = e_at(80);
+    // y'(0) is 0.046 while y'(1) ≈ 12: the absolute error in the slope at 0
+    // inherits O(h^8) of the layer; 1e-10 is 2e-9 relative.
+    assert!(e < 1e-10, "mu=5: {e:e}");
+    // μ = 10: the layer at s = 1 needs the adaptive mesh. Start from the μ = 5
+    // solution (a standard parameter step) and ask for 1e-8.
+    let sol10 = Collocation::new()
+        .tolerance(1e-8)
+        .solve(&Troesch, &sol, &[10.0])
+        .unwrap();
+    let e10 = (sol10.at_mesh(0)[1] - 3.583_377_846_308_137e-4).abs();
+    // The tolerance is relative to 1 + max|y| (y'(1) ≈ 148), so it promises
+    // ~1.5e-6 absolute; y'(0) = 3.58e-4 sits in the quiet region where the
+    // error is far smaller: ask for 1e-3 relative to the tiny slope.
+    assert!(sol10.error_estimate() <= 1e-8 * 150.0);
+    assert!(e10 < 3.6e-7, "mu=10: {e10:e} ({sol10})");
+}

