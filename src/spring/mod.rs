@@ -7,6 +7,11 @@
 //! | model | what it assumes | cost |
 //! |---|---|---|
 //! | [`HelixModel`] | the spring stays an exact helix (the paper's Appendix) | microseconds |
+//! | [`ElasticaModel`] | the spring is flat, as between glass plates: the primary υ elastica | about a millisecond |
+//! | [`RodModel`] | the full 3D anisotropic rod, by collocation continuation | about a second |
+//!
+//! What each costs in accuracy against the 3D rod is measured in
+//! `docs/ACCURACY.md` (section "spring").
 //!
 //! Every model implements [`Model`]; a [`Response`] gives the curve, its folds,
 //! the pop-outs, the stretches between them, their loop counts and the
@@ -18,16 +23,21 @@
 //! let pull = HelixModel::default().pull(&spring, 0.5)?; // up to F/(2πn)² = 0.5
 //! let last = pull.curve().points().last().unwrap();
 //! assert!((last.force / spring.force_scale() - 0.5).abs() < 1e-9);
-//! assert!(pull.pop_outs().is_empty()); // a helix never pops a loop
+//! assert!(pull.pop_outs().is_empty()); // below the helix's own force maximum
 //! # Ok::<(), hockle::Error>(())
 //! ```
 
+mod elastica_model;
 mod helix_model;
 mod response;
+mod rod_model;
 mod scene;
 
+pub use crate::rod::Control;
+pub use elastica_model::ElasticaModel;
 pub use helix_model::HelixModel;
-pub use response::{BranchMatch, Control, Direction, Jump, PopOut, Response, Stretch};
+pub use response::{BranchMatch, Direction, Jump, PopOut, Response, Stretch};
+pub use rod_model::RodModel;
 pub use scene::Spring;
 
 use crate::error::Result;

@@ -9,17 +9,7 @@
 use core::ops::Range;
 
 use crate::curve::{Fold, FoldKind, ForceExtension, ForcePoint};
-
-/// Which quantity the testing machine controls.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub enum Control {
-    /// The force is prescribed: the spring jumps at folds in force.
-    Force,
-    /// The end-to-end distance is prescribed: the spring jumps at folds in
-    /// extension.
-    Extension,
-}
+use crate::rod::Control;
 
 /// Loading (the controlled quantity increases) or unloading.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -93,6 +83,7 @@ pub struct Response {
     curve: ForceExtension,
     folds: Vec<Fold>,
     loops: Option<Vec<u32>>,
+    stopped_early: Option<String>,
 }
 
 impl Response {
@@ -107,6 +98,7 @@ impl Response {
             curve,
             folds,
             loops: None,
+            stopped_early: None,
         }
     }
 
@@ -123,6 +115,7 @@ impl Response {
             curve,
             folds,
             loops: None,
+            stopped_early: None,
         }
     }
 
@@ -135,6 +128,20 @@ impl Response {
             self.loops = Some(loops);
         }
         self
+    }
+
+    /// The same pull, marked as ended before its target, with the model's
+    /// reason (a failed run keeps every point it computed).
+    #[must_use]
+    pub fn with_early_stop(mut self, reason: impl Into<String>) -> Self {
+        self.stopped_early = Some(reason.into());
+        self
+    }
+
+    /// Why the model stopped before the target force, if it did.
+    #[must_use]
+    pub fn stopped_early(&self) -> Option<&str> {
+        self.stopped_early.as_deref()
     }
 
     /// The model that answered.
@@ -306,7 +313,11 @@ impl core::fmt::Display for Response {
             self.curve.len(),
             self.folds.len(),
             self.pop_outs().len()
-        )
+        )?;
+        match &self.stopped_early {
+            Some(reason) => write!(f, " (stopped early: {reason})"),
+            None => Ok(()),
+        }
     }
 }
 
