@@ -148,6 +148,18 @@ impl ForceExtension {
         }
         Ok(())
     }
+
+    /// The folds of the curve: local extrema of the force and of the
+    /// extension along it, in order, each located at the vertex of the
+    /// parabola (in the points' parameter) through the extreme point and its
+    /// two neighbours.
+    ///
+    /// Models that locate their folds more precisely (continuation) report
+    /// those instead; this serves every curve alike.
+    #[must_use]
+    pub fn folds(&self) -> Vec<Fold> {
+        detect_folds(&self.points)
+    }
 }
 
 impl Extend<ForcePoint> for ForceExtension {
@@ -166,6 +178,113 @@ impl core::fmt::Display for ForceExtension {
             self.parameter_name,
             self.scale_coils
         )
+    }
+}
+
+/// What turns at a fold.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum FoldKind {
+    /// A local maximum of the force along the curve (a pop-out starts).
+    MaxForce,
+    /// A local minimum of the force along the curve (a pop-out ends).
+    MinForce,
+    /// A local maximum of the extension along the curve.
+    MaxExtension,
+    /// A local minimum of the extension along the curve.
+    MinExtension,
+}
+
+/// A turning point of force or extension along the curve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Fold {
+    /// What turns.
+    pub kind: FoldKind,
+    /// The index of the curve point nearest the fold.
+    pub index: usize,
+    /// The fold itself (located between curve points where the model could).
+    pub point: ForcePoint,
+}
+
+impl core::fmt::Display for FoldKind {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(match self {
+            Self::MaxForce => "maximum-force fold",
+            Self::MinForce => "minimum-force fold",
+            Self::MaxExtension => "maximum-extension fold",
+            Self::MinExtension => "minimum-extension fold",
+        })
+    }
+}
+
+impl core::fmt::Display for Fold {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(
+            f,
+            "{} at Δz = {}, F = {}",
+            self.kind, self.point.extension, self.point.force
+        )
+    }
+}
+
+/// Local extrema of force and extension along the curve, each located at
+/// the vertex of the parabola through the point and its two neighbours
+/// (in the curve's parameter).
+fn detect_folds(pts: &[ForcePoint]) -> Vec<Fold> {
+    let mut folds = Vec::new();
+    for i in 1..pts.len().saturating_sub(1) {
+        let (a, b, c) = (&pts[i - 1], &pts[i], &pts[i + 1]);
+        for (quantity, value) in [(0, b.force), (1, b.extension)] {
+            let get = |p: &ForcePoint| if quantity == 0 { p.force } else { p.extension };
+            let (va, vc) = (get(a), get(c));
+            let kind = match quantity {
+                0 if value > va && value >= vc => FoldKind::MaxForce,
+                0 if value < va && value <= vc => FoldKind::MinForce,
+                1 if value > va && value >= vc => FoldKind::MaxExtension,
+                1 if value < va && value <= vc => FoldKind::MinExtension,
+                _ => continue,
+            };
+            folds.push(Fold {
+                kind,
+                index: i,
+                point: parabola_vertex(a, b, c, get),
+            });
+        }
+    }
+    folds
+}
+
+/// The point at the extremum of `get` on the parabolas through (t, ·) of
+/// the three points, t the curve parameter; falls back to `b` when the
+/// parameters do not separate the points.
+fn parabola_vertex(
+    a: &ForcePoint,
+    b: &ForcePoint,
+    c: &ForcePoint,
+    get: impl Fn(&ForcePoint) -> f64,
+) -> ForcePoint {
+    let (ta, tb, tc) = (a.parameter, b.parameter, c.parameter);
+    let (ya, yb, yc) = (get(a), get(b), get(c));
+    let denom = (ta - tb) * (ta - tc) * (tb - tc);
+    if denom == 0.0 || denom.is_nan() {
+        return *b;
+    }
+    let num = ta * ta * (yb - yc) + tb * tb * (yc - ya) + tc * tc * (ya - yb);
+    let den = 2.0 * (ta * (yb - yc) + tb * (yc - ya) + tc * (ya - yb));
+    let t = num / den;
+    if !(t.is_finite() && t >= ta.min(tc) && t <= ta.max(tc)) {
+        return *b;
+    }
+    let quad = |fa: f64, fb: f64, fc: f64| {
+        fa * (t - tb) * (t - tc) / ((ta - tb) * (ta - tc))
+            + fb * (t - ta) * (t - tc) / ((tb - ta) * (tb - tc))
+            + fc * (t - ta) * (t - tb) / ((tc - ta) * (tc - tb))
+    };
+    ForcePoint {
+        extension: quad(a.extension, b.extension, c.extension),
+        force: quad(a.force, b.force, c.force),
+        parameter: t,
     }
 }
 

@@ -60,5 +60,5 @@ pub mod spring;
 
 pub(crate) mod linalg;
 
-pub use curve::{ForceExtension, ForcePoint};
+pub use curve::{Fold, FoldKind, ForceExtension, ForcePoint};
 pub use error::{Error, Result};

@@ -26,7 +26,10 @@ use nalgebra::DMatrix;
 use super::problem::Problem;
 use super::tableau::Tableau;
 use crate::error::{Error, Result};
-use crate::linalg::{Breakdown, Det, apply_lower, lu_panel, solve_upper, solve_upper_left};
+use crate::linalg::{
+    Breakdown, DenseWorkspace, Det, apply_lower, lu_panel, lu_solve_block, lu_solve_vec,
+    solve_upper, solve_upper_left,
+};
 
 /// Unknowns (or a direction in their space). `p` always has the problem's
 /// full parameter length; only the free entries are unknowns.
@@ -118,6 +121,9 @@ pub(crate) struct System<'a, P: Problem + ?Sized> {
     // Phase A.
     wa: Vec<f64>,
     wpiv: Vec<usize>,
+    wpinv: Vec<usize>,
+    ws: DenseWorkspace,
+    tmp: Vec<f64>,
     gam: Vec<f64>,
     pim: Vec<f64>,
     dint: Vec<f64>,
@@ -151,6 +157,7 @@ pub(crate) struct System<'a, P: Problem + ?Sized> {
     fbuf2: Vec<f64>,
     ybuf: Vec<f64>,
     pbuf: Vec<f64>,
+    pbuf_x: Vec<f64>,
     kap: Vec<f64>,
     rho: Vec<f64>,
     rtop: Vec<f64>,
@@ -250,6 +257,9 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
             ycol: vec![0.0; nn * mn],
             wa: vec![0.0; nn * mn * wcols],
             wpiv: vec![0; nn * mn],
+            wpinv: vec![0; mn],
+            ws: DenseWorkspace::new(mn, n + nq),
+            tmp: vec![0.0; mn],
             gam: vec![0.0; nn * n * n],
             pim: vec![0.0; nn * n * nq],
             dint: vec![0.0; nn * m * nint * n],
@@ -279,6 +289,7 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
             fbuf2: vec![0.0; n.max(nbc).max(nint)],
             ybuf: vec![0.0; 2 * n],
             pbuf: vec![0.0; np],
+            pbuf_x: vec![0.0; np],
             kap: vec![0.0; nn * mn],
             rho: vec![0.0; nn * n],
             rtop: vec![0.0; nn * n],
@@ -564,7 +575,11 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
         let wcols = mn + n + nq;
         let mut ycol = std::mem::take(&mut self.ycol);
         self.collocation_values(x, &mut ycol);
-        let p = x.p.clone();
+        let p = std::mem::take(&mut self.pbuf_x);
+        let mut p = p;
+        p.clear();
+        p.extend_from_slice(&x.p);
+        let y_ref = std::mem::take(&mut self.y_ref);
         let nint = self.nint;
         self.dint_p.fill(0.0);
         let sparse = self.linear == LinearSolver::SparseLu;
@@ -607,8 +622,7 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
                     self.push_stage_triplets(j, k, h);
                 }
                 if nint > 0 {
-                    let yr = self.y_ref[idx..idx + n].to_vec();
-                    self.integrand_jacobian(z, &ycol[idx..idx + n], &yr, &p);
+                    self.integrand_jacobian(z, &ycol[idx..idx + n], &y_ref[idx..idx + n], &p);
                     let w = h * self.tab.b[k];
                     let d = &mut self.dint[(j * m + k) * nint * n..(j * m + k + 1) * nint * n];
                     for c in 0..n {
@@ -628,18 +642,17 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
             }
             let wa = &mut self.wa[wbase..wbase + mn * wcols];
             let piv = &mut self.wpiv[j * mn..(j + 1) * mn];
-            let d = match lu_panel(wa, mn, wcols, mn, piv) {
+            let pinv = &mut self.wpinv[..];
+            let d = match lu_solve_block(wa, mn, wcols, piv, pinv, &mut self.ws) {
                 Ok(d) => d,
                 Err(b) => {
                     self.ycol = ycol;
+                    self.y_ref = y_ref;
+                    self.pbuf_x = p;
                     return Err(map_breakdown(b, "interval block", j));
                 }
             };
             wdet = wdet.mul(d);
-            let (lu, extra) = wa.split_at_mut(mn * mn);
-            for col in extra.chunks_exact_mut(mn) {
-                solve_upper(lu, mn, mn, col);
-            }
             // Γ_j = I + h Σ_k b_k G_k,  Π_j = h Σ_k b_k Q_k.
             let gam = &mut self.gam[j * n * n..(j + 1) * n * n];
             gam.fill(0.0);
@@ -665,9 +678,9 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
                 }
             }
         }
-        let y0 = x.y[..n].to_vec();
-        let y1 = x.y[nn * n..].to_vec();
-        self.boundary_jacobian(&y0, &y1, &p);
+        self.y_ref = y_ref;
+        self.boundary_jacobian(&x.y[..n], &x.y[nn * n..], &p);
+        self.pbuf_x = p;
         let nbc = self.nbc;
         for c in 0..n {
             for r in 0..nbc {
@@ -1005,8 +1018,7 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
                 *kv = -v;
             }
             let wa = &self.wa[j * mn * wcols..(j + 1) * mn * wcols];
-            apply_lower(wa, mn, mn, &self.wpiv[j * mn..(j + 1) * mn], kap);
-            solve_upper(wa, mn, mn, kap);
+            lu_solve_vec(wa, mn, &self.wpiv[j * mn..(j + 1) * mn], kap, &mut self.tmp);
             for i in 0..n {
                 let mut s = -r.cont[j * n + i];
                 for k in 0..m {

@@ -9,11 +9,6 @@ use super::measure;
 use crate::bvp::Solution;
 use crate::error::{Error, Result};
 
-/// Samples used by the sampled outputs (loop count, planarity, |q| drift)
-/// per mesh interval; the tangent turns by less than π/8 between samples for
-/// every shape met in the paper's runs.
-const SAMPLES_PER_INTERVAL: usize = 8;
-
 /// One equilibrium of a [`Rod`]: a collocation [`Solution`] of the rod's
 /// boundary-value problem, with every output computed only when asked.
 ///
@@ -122,8 +117,31 @@ impl Equilibrium {
         self.solution.mesh().points()
     }
 
-    fn samples(&self) -> usize {
-        SAMPLES_PER_INTERVAL * self.solution.mesh().intervals()
+    /// (quadrature weight, state) at the mesh points (weight 0) and the
+    /// Gauss points (their composite Gauss weights), in order of s: exact
+    /// moments of degree ≤ 2m − 1 per interval, and the tangent sampled m + 1
+    /// times per interval.
+    fn samples(&self) -> Vec<(f64, [f64; 13])> {
+        let sol = &self.solution;
+        let m = sol.points_per_interval();
+        let nn = sol.mesh().intervals();
+        let cv = sol.collocation_values();
+        let gw = measure::gauss_weights(m);
+        let mut out = Vec::with_capacity(nn * (m + 1) + 1);
+        let state = |col: &[f64]| {
+            let mut y = [0.0; 13];
+            y.copy_from_slice(col);
+            y
+        };
+        for j in 0..nn {
+            out.push((0.0, state(sol.at_mesh(j))));
+            let h = sol.mesh().width(j);
+            for (k, w) in gw.iter().enumerate() {
+                out.push((w * h, state(cv.column(j * m + k).as_slice())));
+            }
+        }
+        out.push((0.0, state(sol.at_mesh(nn))));
+        out
     }
 
     /// The centreline r(s).
@@ -199,7 +217,7 @@ impl Equilibrium {
     /// planar elastica solutions; R0 = sin θ0/(2πn) for the unstressed helix.
     #[must_use]
     pub fn planarity(&self) -> f64 {
-        measure::planarity(|s| self.eval(s), self.breaks(), self.samples())
+        measure::planarity(&self.samples())
     }
 
     /// The turning number: the net turn of the tangent, projected onto the
@@ -209,7 +227,7 @@ impl Equilibrium {
     /// from its curvature maxima; continuous along a branch.
     #[must_use]
     pub fn turning_number(&self) -> f64 {
-        measure::turning(|s| self.eval(s), self.breaks(), self.samples()).turns
+        measure::turning(&self.samples()).turns
     }
 
     /// The number of loops: how many times the tangent, projected onto the
@@ -220,7 +238,16 @@ impl Equilibrium {
     /// tangents; it changes by one during each pop-out.
     #[must_use]
     pub fn loops(&self) -> u32 {
-        measure::turning(|s| self.eval(s), self.breaks(), self.samples()).loops
+        measure::turning(&self.samples()).loops
+    }
+
+    /// (loops, planarity) from one set of samples (the pull records both).
+    pub(crate) fn loops_and_planarity(&self) -> (u32, f64) {
+        let samples = self.samples();
+        (
+            measure::turning(&samples).loops,
+            measure::planarity(&samples),
+        )
     }
 
     /// max | |q(t_j)| − 1 | over the mesh points t_j. Gauss collocation is

@@ -35,12 +35,46 @@ pub(crate) fn integrate<G: FnMut(f64) -> f64>(breaks: &[f64], sub: usize, mut g:
     total
 }
 
-/// The composite 5-point Gauss nodes and weights on the panels.
-fn nodes(breaks: &[f64]) -> impl Iterator<Item = (f64, f64)> + '_ {
-    breaks.windows(2).flat_map(|w| {
-        let h = w[1] - w[0];
-        GL5.iter().map(move |&(x, wt)| (w[0] + h * x, h * wt))
-    })
+/// The m Gauss–Legendre weights on [0, 1] (from the moment equations
+/// Σ_k w_k c_k^i = 1/(i + 1) at the nodes c_k of the m-point rule).
+pub(crate) fn gauss_weights(m: usize) -> Vec<f64> {
+    // Nodes: roots of the shifted Legendre polynomial by Newton from the
+    // Chebyshev guesses (Golub–Welsch would do as well; m ≤ 7 here).
+    let mut nodes = Vec::with_capacity(m);
+    for k in 0..m {
+        let mut x = -((PI * (k as f64 + 0.75)) / (m as f64 + 0.5)).cos();
+        for _ in 0..100 {
+            let (mut p0, mut p1) = (1.0, x);
+            for n in 2..=m {
+                let nf = n as f64;
+                let p2 = ((2.0 * nf - 1.0) * x * p1 - (nf - 1.0) * p0) / nf;
+                p0 = p1;
+                p1 = p2;
+            }
+            let dp = m as f64 * (x * p1 - p0) / (x * x - 1.0);
+            let dx = p1 / dp;
+            x -= dx;
+            if dx.abs() < 1e-16 {
+                break;
+            }
+        }
+        nodes.push(x);
+    }
+    nodes
+        .iter()
+        .map(|&x| {
+            let (mut p0, mut p1) = (1.0, x);
+            for n in 2..=m {
+                let nf = n as f64;
+                let p2 = ((2.0 * nf - 1.0) * x * p1 - (nf - 1.0) * p0) / nf;
+                p0 = p1;
+                p1 = p2;
+            }
+            let dp = m as f64 * (x * p1 - p0) / (x * x - 1.0);
+            // Weight on [−1, 1] is 2/((1 − x²) P′²); halve for [0, 1].
+            1.0 / ((1.0 - x * x) * dp * dp)
+        })
+        .collect()
 }
 
 /// The material strains u(s) of the state y (u = D⁻¹ Rᵀ M + u0).
@@ -62,13 +96,13 @@ pub(crate) fn energy<E: Fn(f64) -> [f64; 13]>(rod: &Rod, eval: E, breaks: &[f64]
 
 /// Distance from planarity: the largest distance of the centreline from
 /// the plane through the force axis k that fits it best in L² (planar
-/// elastica solutions lie in such a plane). Sampled at `samples` points.
-pub(crate) fn planarity<E: Fn(f64) -> [f64; 13]>(eval: E, breaks: &[f64], samples: usize) -> f64 {
+/// elastica solutions lie in such a plane). `samples` are (quadrature
+/// weight, state) in order of s.
+pub(crate) fn planarity(samples: &[(f64, [f64; 13])]) -> f64 {
     let mut s2 = Matrix2::zeros();
-    for (s, w) in nodes(breaks) {
-        let y = eval(s);
+    for (w, y) in samples {
         let v = nalgebra::Vector2::new(y[0], y[1]);
-        s2 += w * v * v.transpose();
+        s2 += *w * v * v.transpose();
     }
     let eig = SymmetricEigen::new(s2);
     let i = if eig.eigenvalues[0] <= eig.eigenvalues[1] {
@@ -77,11 +111,9 @@ pub(crate) fn planarity<E: Fn(f64) -> [f64; 13]>(eval: E, breaks: &[f64], sample
         1
     };
     let n = eig.eigenvectors.column(i).into_owned();
-    (0..=samples)
-        .map(|j| {
-            let y = eval(j as f64 / samples as f64);
-            (y[0] * n.x + y[1] * n.y).abs()
-        })
+    samples
+        .iter()
+        .map(|(_, y)| (y[0] * n.x + y[1] * n.y).abs())
         .fold(0.0, f64::max)
 }
 
@@ -100,12 +132,14 @@ pub(crate) struct Turning {
     pub(crate) loops: u32,
 }
 
-pub(crate) fn turning<E: Fn(f64) -> [f64; 13]>(eval: E, breaks: &[f64], samples: usize) -> Turning {
+pub(crate) fn turning(samples: &[(f64, [f64; 13])]) -> Turning {
     let mut t = Matrix3::zeros();
-    for (s, w) in nodes(breaks) {
-        let y = eval(s);
-        let d3 = rot(&y[3..7]).column(2).into_owned();
-        t += w * d3 * d3.transpose();
+    let tangents: Vec<Vector3<f64>> = samples
+        .iter()
+        .map(|(_, y)| rot(&y[3..7]).column(2).into_owned())
+        .collect();
+    for ((w, _), d3) in samples.iter().zip(&tangents) {
+        t += *w * d3 * d3.transpose();
     }
     let eig = SymmetricEigen::new(t);
     let imin = eig.eigenvalues.imin();
@@ -117,12 +151,9 @@ pub(crate) fn turning<E: Fn(f64) -> [f64; 13]>(eval: E, breaks: &[f64], samples:
     };
     let e1 = (seed - nu * nu.dot(&seed)).normalize();
     let e2 = nu.cross(&e1);
-    let angles: Vec<f64> = (0..=samples)
-        .map(|j| {
-            let y = eval(j as f64 / samples as f64);
-            let d3 = rot(&y[3..7]).column(2).into_owned();
-            d3.dot(&e2).atan2(d3.dot(&e1))
-        })
+    let angles: Vec<f64> = tangents
+        .iter()
+        .map(|d3| d3.dot(&e2).atan2(d3.dot(&e1)))
         .collect();
     let kp = Vector3::z() - nu * nu.z;
     let reference = if kp.norm() > 0.5 {
@@ -146,5 +177,23 @@ pub(crate) fn turning<E: Fn(f64) -> [f64; 13]>(eval: E, breaks: &[f64], samples:
     Turning {
         turns: (total / (2.0 * PI)).abs(),
         loops: u32::try_from(crossings).unwrap_or(u32::MAX),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn gauss_weights_are_the_legendre_weights() {
+        // A&S Table 25.4, halved for [0, 1].
+        let w = gauss_weights(4);
+        let r = [0.173_927_422_568_726_9, 0.326_072_577_431_273_1];
+        for (a, b) in w.iter().zip([r[0], r[1], r[1], r[0]]) {
+            assert!((a - b).abs() < 1e-15, "{a} vs {b}");
+        }
+        for m in 1..=7 {
+            assert!((gauss_weights(m).iter().sum::<f64>() - 1.0).abs() < 1e-14);
+        }
     }
 }

@@ -76,6 +76,7 @@
 mod equilibrium;
 mod measure;
 mod problem;
+mod pull;
 mod quat;
 
 use core::f64::consts::{FRAC_PI_2, PI};
@@ -85,6 +86,7 @@ use nalgebra::Vector3;
 use crate::error::{Error, Result};
 
 pub use equilibrium::Equilibrium;
+pub use pull::{Fold, FoldKind, Pull, PullObserver, PullPoint, PullRun, PullTermination, Stretch};
 
 /// Which end load is prescribed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

@@ -4,7 +4,7 @@ use crate::curve::{ForceExtension, ForcePoint};
 use crate::error::{Error, Result};
 use crate::helix::Helix;
 
-use super::{Model, Pull, Spring, check_target};
+use super::{Model, Response, Spring, check_target};
 
 /// The spring as an exact helix with zero axial moment throughout
 /// ([`crate::helix`]): instant, exact for θ0 far from 90° and for isotropic
@@ -49,7 +49,7 @@ impl Model for HelixModel {
     /// # Errors
     /// [`Error::InvalidArgument`] for a bad target, or if the spring's
     /// intrinsic strains are not those of its helix (the model assumes them).
-    fn pull(&self, spring: &Spring, max_force_scaled: f64) -> Result<Pull> {
+    fn pull(&self, spring: &Spring, max_force_scaled: f64) -> Result<Response> {
         let target = check_target(max_force_scaled)? * spring.force_scale();
         if !spring.is_helical() {
             return Err(Error::InvalidArgument {
@@ -77,20 +77,41 @@ impl Model for HelixModel {
                 parameter: theta,
             });
         }
-        Ok(Pull::from_curve(self.name(), curve))
+        Ok(Response::from_curve(self.name(), curve))
     }
 }
 
-/// The helix angle θ ∈ (0, θ0) at which the helix carries `force`, by
-/// bisection (F grows without bound as θ → 0).
+/// Scan resolution of [`angle_at_force`]: the helix force has at most a
+/// few turning points between rest and Δz → 1, far apart in Δz.
+const SCAN: usize = 4096;
+
+/// The first helix angle θ, going from θ0 towards 0 (extension increasing),
+/// at which the helix carries `force`: the first bracket on a scan uniform
+/// in Δz, then bisection. F grows without bound as θ → 0, so a bracket
+/// exists for every finite force.
+///
+/// The helix force need not be monotone (at θ0 = 89.8°, A/B = 10 it peaks
+/// at F/(2πn)² ≈ 0.66 near Δz ≈ 0.68): plain bisection on (0, θ0) could
+/// return a later crossing.
 fn angle_at_force(helix: &Helix, force: f64) -> Result<f64> {
-    let (mut lo, mut hi) = (0.0_f64, helix.theta0());
+    let z0 = helix.theta0().cos();
+    let mut hi = helix.theta0();
+    let mut lo = 0.0_f64;
+    for i in 1..=SCAN {
+        let z = z0 + (1.0 - z0) * i as f64 / SCAN as f64;
+        let theta = z.min(1.0).acos();
+        if theta <= 0.0 || helix.force(theta)? >= force {
+            lo = theta;
+            break;
+        }
+        hi = theta;
+    }
     loop {
         let mid = 0.5 * (lo + hi);
         if mid <= lo || mid >= hi {
             break;
         }
-        if helix.force(mid)? > force {
+        if helix.force(mid)? >= force {
             lo = mid;
         } else {
             hi = mid;

@@ -1,4 +1,4 @@
-//! The scene: one [`Spring`], answered by every model with a [`Pull`] whose
+//! The scene: one [`Spring`], answered by every model with a [`Response`] whose
 //! curve is a [`ForceExtension`].
 //!
 //! A user describes the spring once and picks the cheapest model the
@@ -7,8 +7,13 @@
 //! | model | what it assumes | cost |
 //! |---|---|---|
 //! | [`HelixModel`] | the spring stays an exact helix (the paper's Appendix) | microseconds |
+//! | [`ElasticaModel`] | the spring is flat, as between glass plates: the primary υ elastica | about a millisecond |
+//! | [`RodModel`] | the full 3D anisotropic rod, by collocation continuation | about a second |
 //!
-//! Every model implements [`Model`]; a [`Pull`] gives the curve, its folds,
+//! What each costs in accuracy against the 3D rod is measured in
+//! `docs/ACCURACY.md` (section "spring").
+//!
+//! Every model implements [`Model`]; a [`Response`] gives the curve, its folds,
 //! the pop-outs, the stretches between them, their loop counts and the
 //! jumps under force or displacement control.
 //!
@@ -18,21 +23,26 @@
 //! let pull = HelixModel::default().pull(&spring, 0.5)?; // up to F/(2πn)² = 0.5
 //! let last = pull.curve().points().last().unwrap();
 //! assert!((last.force / spring.force_scale() - 0.5).abs() < 1e-9);
-//! assert!(pull.pop_outs().is_empty()); // a helix never pops a loop
+//! assert!(pull.pop_outs().is_empty()); // below the helix's own force maximum
 //! # Ok::<(), hockle::Error>(())
 //! ```
 
+mod elastica_model;
 mod helix_model;
-mod pull;
+mod response;
+mod rod_model;
 mod scene;
 
+pub use crate::rod::Control;
+pub use elastica_model::ElasticaModel;
 pub use helix_model::HelixModel;
-pub use pull::{BranchMatch, Control, Direction, Fold, FoldKind, Jump, PopOut, Pull, Stretch};
+pub use response::{BranchMatch, Direction, Jump, PopOut, Response, Stretch};
+pub use rod_model::RodModel;
 pub use scene::Spring;
 
 use crate::error::Result;
 
-/// A model of a pulled spring: answers [`Spring`]s with [`Pull`]s.
+/// A model of a pulled spring: answers [`Spring`]s with [`Response`]s.
 pub trait Model {
     /// A short name for tables and labels.
     fn name(&self) -> &str;
@@ -43,7 +53,7 @@ pub trait Model {
     /// # Errors
     /// If the model cannot represent the spring, or `max_force_scaled` is not
     /// positive and finite; each model documents its own.
-    fn pull(&self, spring: &Spring, max_force_scaled: f64) -> Result<Pull>;
+    fn pull(&self, spring: &Spring, max_force_scaled: f64) -> Result<Response>;
 }
 
 pub(crate) fn check_target(max_force_scaled: f64) -> Result<f64> {

@@ -1,5 +1,6 @@
 //! Classical test problems with independent references (closed forms and
 //! published values), shared by the bvp and continuation suites.
+#![allow(clippy::needless_range_loop)]
 
 use hockle::bvp::Problem;
 use hockle::nalgebra::DMatrixViewMut;
@@ -180,4 +181,67 @@ pub fn ellip_k_agm(k: f64) -> f64 {
         }
     }
     std::f64::consts::PI / (2.0 * a)
+}
+
+/// A 13-dimensional nonlinear test system of the size of the 3D rod:
+/// y′ = M y + 0.1 sin(y) + p₀ with a fixed dense M (M_ij = 0.5 sin(i + 2j + 1)),
+/// y_i(0) = 0 for i < 7, y_i(1) = 0.1 (i − 6) for i ≥ 7; analytic Jacobians.
+pub struct Coupled13 {
+    m: [[f64; 13]; 13],
+}
+
+impl Coupled13 {
+    pub fn new() -> Self {
+        let mut m = [[0.0; 13]; 13];
+        for (i, row) in m.iter_mut().enumerate() {
+            for (j, v) in row.iter_mut().enumerate() {
+                *v = 0.5 * ((i + 2 * j + 1) as f64).sin();
+            }
+        }
+        Coupled13 { m }
+    }
+}
+
+impl Problem for Coupled13 {
+    fn dim(&self) -> usize {
+        13
+    }
+    fn parameter_count(&self) -> usize {
+        1
+    }
+    fn boundary_count(&self) -> usize {
+        13
+    }
+    fn rhs(&self, _s: f64, y: &[f64], p: &[f64], f: &mut [f64]) {
+        for i in 0..13 {
+            let mut v = 0.1 * y[i].sin() + p[0];
+            for j in 0..13 {
+                v += self.m[i][j] * y[j];
+            }
+            f[i] = v;
+        }
+    }
+    fn rhs_jacobian(
+        &self,
+        _s: f64,
+        y: &[f64],
+        _p: &[f64],
+        mut dfdy: DMatrixViewMut<'_, f64>,
+        mut dfdp: DMatrixViewMut<'_, f64>,
+    ) -> bool {
+        for i in 0..13 {
+            for j in 0..13 {
+                dfdy[(i, j)] = self.m[i][j];
+            }
+            dfdy[(i, i)] += 0.1 * y[i].cos();
+            dfdp[(i, 0)] = 1.0;
+        }
+        true
+    }
+    fn boundary(&self, y0: &[f64], y1: &[f64], _p: &[f64], g: &mut [f64]) {
+        g[..7].copy_from_slice(&y0[..7]);
+        for i in 7..13 {
+            g[i] = y1[i] - 0.1 * (i as f64 - 6.0);
+        }
+    }
 }

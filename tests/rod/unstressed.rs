@@ -121,7 +121,14 @@ fn outputs_of_the_solved_helix() {
     assert!((e.turning_number() - 4.0).abs() < 1e-9);
     // Distance from the best plane through the axis: the radius R0.
     let r0 = rod.theta0().sin() / (8.0 * PI);
-    assert!((e.planarity() - r0).abs() < 1e-3 * r0);
+    // Sampled at the mesh and Gauss points: the largest gap is 0.33 h, a
+    // turn of 2π·4·0.33/40 = 0.21 rad, so the max is missed by at most
+    // 1 − cos(0.105) = 5.4e-3 relative.
+    assert!(
+        (e.planarity() - r0).abs() < 1e-2 * r0,
+        "{} vs {r0}",
+        e.planarity()
+    );
     assert!((e.curvature(0.3).unwrap() - 8.0 * PI * rod.theta0().sin()).abs() < 1e-12);
     assert!((e.twist(0.3).unwrap() - 8.0 * PI * rod.theta0().cos()).abs() < 1e-12);
     assert!(e.quaternion_drift() < 1e-15);

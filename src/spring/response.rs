@@ -1,4 +1,4 @@
-//! [`Pull`]: a model's answer to "pull this spring", and what can be read
+//! [`Response`]: a model's answer to "pull this spring", and what can be read
 //! off it: folds, pop-outs, stretches between them, the loop count on each,
 //! the elastica branch each follows, and the jumps (hysteresis) under force
 //! or displacement control.
@@ -8,18 +8,8 @@
 
 use core::ops::Range;
 
-use crate::curve::{ForceExtension, ForcePoint};
-
-/// Which quantity the testing machine controls.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub enum Control {
-    /// The force is prescribed: the spring jumps at folds in force.
-    Force,
-    /// The end-to-end distance is prescribed: the spring jumps at folds in
-    /// extension.
-    Extension,
-}
+use crate::curve::{Fold, FoldKind, ForceExtension, ForcePoint};
+use crate::rod::Control;
 
 /// Loading (the controlled quantity increases) or unloading.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -29,32 +19,6 @@ pub enum Direction {
     Loading,
     /// The controlled quantity decreases.
     Unloading,
-}
-
-/// What turns at a fold.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub enum FoldKind {
-    /// A local maximum of the force along the curve (a pop-out starts).
-    MaxForce,
-    /// A local minimum of the force along the curve (a pop-out ends).
-    MinForce,
-    /// A local maximum of the extension along the curve.
-    MaxExtension,
-    /// A local minimum of the extension along the curve.
-    MinExtension,
-}
-
-/// A turning point of force or extension along the curve.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct Fold {
-    /// What turns.
-    pub kind: FoldKind,
-    /// The index of the curve point nearest the fold.
-    pub index: usize,
-    /// The fold itself (located between curve points where the model could).
-    pub point: ForcePoint,
 }
 
 /// A loop popping out: a maximum-force fold followed by a minimum-force fold.
@@ -114,25 +78,27 @@ pub struct BranchMatch {
 /// at every point.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct Pull {
+pub struct Response {
     model: String,
     curve: ForceExtension,
     folds: Vec<Fold>,
     loops: Option<Vec<u32>>,
+    stopped_early: Option<String>,
 }
 
-impl Pull {
+impl Response {
     /// A pull whose folds are found on the curve itself: local extrema of
     /// force and of extension, each refined by the parabola through the
     /// three points around it.
     #[must_use]
     pub fn from_curve(model: impl Into<String>, curve: ForceExtension) -> Self {
-        let folds = detect_folds(curve.points());
+        let folds = curve.folds();
         Self {
             model: model.into(),
             curve,
             folds,
             loops: None,
+            stopped_early: None,
         }
     }
 
@@ -149,6 +115,7 @@ impl Pull {
             curve,
             folds,
             loops: None,
+            stopped_early: None,
         }
     }
 
@@ -161,6 +128,20 @@ impl Pull {
             self.loops = Some(loops);
         }
         self
+    }
+
+    /// The same pull, marked as ended before its target, with the model's
+    /// reason (a failed run keeps every point it computed).
+    #[must_use]
+    pub fn with_early_stop(mut self, reason: impl Into<String>) -> Self {
+        self.stopped_early = Some(reason.into());
+        self
+    }
+
+    /// Why the model stopped before the target force, if it did.
+    #[must_use]
+    pub fn stopped_early(&self) -> Option<&str> {
+        self.stopped_early.as_deref()
     }
 
     /// The model that answered.
@@ -323,7 +304,7 @@ impl Pull {
     }
 }
 
-impl core::fmt::Display for Pull {
+impl core::fmt::Display for Response {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         write!(
             f,
@@ -332,7 +313,11 @@ impl core::fmt::Display for Pull {
             self.curve.len(),
             self.folds.len(),
             self.pop_outs().len()
-        )
+        )?;
+        match &self.stopped_early {
+            Some(reason) => write!(f, " (stopped early: {reason})"),
+            None => Ok(()),
+        }
     }
 }
 
@@ -368,66 +353,6 @@ fn interpolate(
     }
 }
 
-/// Local extrema of force and extension along the curve, each located at
-/// the vertex of the parabola through the point and its two neighbours
-/// (in the curve's parameter).
-pub(crate) fn detect_folds(pts: &[ForcePoint]) -> Vec<Fold> {
-    let mut folds = Vec::new();
-    for i in 1..pts.len().saturating_sub(1) {
-        let (a, b, c) = (&pts[i - 1], &pts[i], &pts[i + 1]);
-        for (quantity, value) in [(0, b.force), (1, b.extension)] {
-            let get = |p: &ForcePoint| if quantity == 0 { p.force } else { p.extension };
-            let (va, vc) = (get(a), get(c));
-            let kind = match quantity {
-                0 if value > va && value >= vc => FoldKind::MaxForce,
-                0 if value < va && value <= vc => FoldKind::MinForce,
-                1 if value > va && value >= vc => FoldKind::MaxExtension,
-                1 if value < va && value <= vc => FoldKind::MinExtension,
-                _ => continue,
-            };
-            folds.push(Fold {
-                kind,
-                index: i,
-                point: parabola_vertex(a, b, c, get),
-            });
-        }
-    }
-    folds
-}
-
-/// The point at the extremum of `get` on the parabolas through (t, ·) of
-/// the three points, t the curve parameter; falls back to `b` when the
-/// parameters do not separate the points.
-fn parabola_vertex(
-    a: &ForcePoint,
-    b: &ForcePoint,
-    c: &ForcePoint,
-    get: impl Fn(&ForcePoint) -> f64,
-) -> ForcePoint {
-    let (ta, tb, tc) = (a.parameter, b.parameter, c.parameter);
-    let (ya, yb, yc) = (get(a), get(b), get(c));
-    let denom = (ta - tb) * (ta - tc) * (tb - tc);
-    if denom == 0.0 || denom.is_nan() {
-        return *b;
-    }
-    let num = ta * ta * (yb - yc) + tb * tb * (yc - ya) + tc * tc * (ya - yb);
-    let den = 2.0 * (ta * (yb - yc) + tb * (yc - ya) + tc * (ya - yb));
-    let t = num / den;
-    if !(t.is_finite() && t >= ta.min(tc) && t <= ta.max(tc)) {
-        return *b;
-    }
-    let quad = |fa: f64, fb: f64, fc: f64| {
-        fa * (t - tb) * (t - tc) / ((ta - tb) * (ta - tc))
-            + fb * (t - ta) * (t - tc) / ((tb - ta) * (tb - tc))
-            + fc * (t - ta) * (t - tb) / ((tc - ta) * (tc - tb))
-    };
-    ForcePoint {
-        extension: quad(a.extension, b.extension, c.extension),
-        force: quad(a.force, b.force, c.force),
-        parameter: t,
-    }
-}
-
 fn distance_to_polyline(p: &ForcePoint, line: &[ForcePoint], scale: f64) -> f64 {
     let (px, py) = (p.extension, p.force / scale);
     line.windows(2)
@@ -453,7 +378,7 @@ mod tests {
     /// Extension t, force t³ − 3t on t ∈ [−3, 3]: force folds at t = ∓1
     /// (F = ±2); under force control loading jumps from t = −1 to t = 2
     /// ((t − 2)(t + 1)² = 0) and unloading from t = 1 to t = −2.
-    fn s_curve(points: usize) -> Pull {
+    fn s_curve(points: usize) -> Response {
         let mut c = ForceExtension::new("s", "t", 1).unwrap();
         for i in 0..points {
             let t = -3.0 + 6.0 * i as f64 / (points - 1) as f64;
@@ -463,7 +388,7 @@ mod tests {
                 parameter: t,
             });
         }
-        Pull::from_curve("test", c)
+        Response::from_curve("test", c)
     }
 
     #[test]

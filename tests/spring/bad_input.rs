@@ -1,0 +1,63 @@
+//! Bad input gives typed errors that name the value.
+
+use hockle::Error;
+use hockle::helix::Stiffness;
+use hockle::nalgebra::Vector3;
+use hockle::spring::{ElasticaModel, HelixModel, Model, RodModel, Spring};
+
+#[test]
+fn springs_reject_zero_coils_and_bad_angles() {
+    let k = Stiffness::nikolai(10.0, 0.05).unwrap();
+    assert!(matches!(
+        Spring::new(0, 1.0, k),
+        Err(Error::InvalidCount { name: "coils", .. })
+    ));
+    for angle in [0.0, -0.1, 1.6, f64::NAN, f64::INFINITY] {
+        assert!(matches!(
+            Spring::new(4, angle, k),
+            Err(Error::InvalidArgument {
+                name: "helix_angle",
+                ..
+            })
+        ));
+    }
+    assert!(
+        Spring::paper()
+            .with_intrinsic_strains(Vector3::new(0.0, f64::NAN, 0.0))
+            .is_err()
+    );
+}
+
+#[test]
+fn every_model_rejects_a_bad_target() {
+    let spring = Spring::paper();
+    let models: [&dyn Model; 3] = [
+        &HelixModel::default(),
+        &ElasticaModel::default(),
+        &RodModel::default(),
+    ];
+    for model in models {
+        for target in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+            assert!(
+                matches!(
+                    model.pull(&spring, target),
+                    Err(Error::InvalidArgument {
+                        name: "max_force_scaled",
+                        ..
+                    })
+                ),
+                "{} accepted {target}",
+                model.name()
+            );
+        }
+    }
+}
+
+#[test]
+fn models_that_assume_helical_strains_refuse_others() {
+    let spring = Spring::paper()
+        .with_intrinsic_strains(Vector3::new(1.0, 25.0, 0.0))
+        .unwrap();
+    assert!(HelixModel::default().pull(&spring, 1.0).is_err());
+    assert!(RodModel::default().pull(&spring, 1.0).is_err());
+}

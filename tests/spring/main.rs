@@ -1,0 +1,8 @@
+//! The scene: every model answers the same spring with the same type.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod bad_input;
+mod cascade;
+mod models;
