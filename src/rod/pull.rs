@@ -356,6 +356,12 @@ impl Pull {
         self
     }
 
+    /// The number of mesh intervals this pull uses.
+    #[must_use]
+    pub fn mesh_intervals(&self) -> usize {
+        self.intervals
+    }
+
     /// Gauss points per interval (2..=7).
     #[must_use]
     pub fn points(mut self, m: usize) -> Self {

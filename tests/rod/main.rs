@@ -4,6 +4,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod cascade;
 mod jacobians;
 mod planar;
 mod unstressed;
