@@ -1,0 +1,314 @@
+//! Whole branches as [`ForceExtension`] curves, sampled adaptively.
+
+use std::collections::BinaryHeap;
+
+use super::bifurcation::bifurcation;
+use super::family::Family;
+use super::secondary::secondary_fold;
+use super::solution::{Arm, Branch, Elastica, check_j, check_n};
+use super::symmetric::primary;
+use crate::curve::{ForceExtension, ForcePoint};
+use crate::error::{Error, Result};
+use crate::special::Modulus;
+
+/// Traces elastica branches into [`ForceExtension`] curves.
+///
+/// The branch is followed in q = ln(1/m₁) = −ln(1 − k²), which is ≈ k² near
+/// k = 0 and ≈ 2K(k) − ln 16 near k = 1, so force and extension are smooth
+/// functions of q at both ends (F ∝ q and Δz ∝ q at the ring, F ∝ q² and
+/// 1 − Δz ∝ 1/q as k → 1); on a secondary arm q = q_fold + (q_end −
+/// q_fold)σ² so that the square-root turn at the fold is smooth in σ. Half
+/// the points are spread uniformly in that parameter; the rest are inserted
+/// one at a time into the longest segment of the plot (Δz and F/(2πn)²
+/// normalised by their ranges), so the curve is evenly resolved where it
+/// bends. Points are returned in order of the parameter, which is stored as
+/// k.
+///
+/// Defaults ([`Trace::new`]): 400 points, up to F/(2πn)² = 2 (n the
+/// branch's coils, or [`Trace::scale_coils`]).
+///
+/// ```
+/// use hockle::elastica::{Trace, Branch};
+/// let c = Trace::new().points(200).max_force_scaled(1.0).run(4, Branch::Upsilon)?;
+/// assert_eq!(c.len(), 200);
+/// let p = c.points();
+/// assert_eq!((p[0].force, p[0].extension), (0.0, 0.0)); // starts at the ring
+/// assert!((c.force_scaled(199).unwrap() - 1.0).abs() < 1e-9);
+/// # Ok::<(), hockle::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Trace {
+    points: usize,
+    max_force_scaled: f64,
+    scale_coils: Option<u32>,
+}
+
+impl Default for Trace {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Largest q = ln(1/m₁) followed (m₁ ≈ 1e-300).
+const Q_MAX: f64 = 690.0;
+
+impl Trace {
+    /// 400 points, up to F/(2πn)² = 2, scaled by the branch's own n.
+    #[must_use]
+    pub fn new() -> Self {
+        Self {
+            points: 400,
+            max_force_scaled: 2.0,
+            scale_coils: None,
+        }
+    }
+
+    /// Number of points (at least 2).
+    #[must_use]
+    pub fn points(mut self, points: usize) -> Self {
+        self.points = points;
+        self
+    }
+
+    /// Where the branch is cut: F/(2π n_scale)² (positive, finite).
+    #[must_use]
+    pub fn max_force_scaled(mut self, f: f64) -> Self {
+        self.max_force_scaled = f;
+        self
+    }
+
+    /// The number of coils whose (2πn)² scales the force (the paper uses 4
+    /// for every elastica figure); defaults to the branch's n.
+    #[must_use]
+    pub fn scale_coils(mut self, n: u32) -> Self {
+        self.scale_coils = Some(n);
+        self
+    }
+
+    fn check(&self, n: u32) -> Result<(u32, f64)> {
+        check_n(n)?;
+        if self.points < 2 {
+            return Err(Error::InvalidCount {
+                name: "points",
+                value: self.points as u64,
+                allowed: "at least 2 points",
+            });
+        }
+        if !(self.max_force_scaled.is_finite() && self.max_force_scaled > 0.0) {
+            return Err(Error::InvalidArgument {
+                name: "max_force_scaled",
+                value: self.max_force_scaled,
+                allowed: "a finite positive scaled force",
+            });
+        }
+        let sc = self.scale_coils.unwrap_or(n);
+        check_n(sc)?;
+        let s = 2.0 * core::f64::consts::PI * f64::from(sc);
+        Ok((sc, self.max_force_scaled * s * s))
+    }
+
+    /// The branch `branch` of an n-coil rod from where it starts (the ring
+    /// for υ, α and ϑ_n; the bifurcation point for ϑ_j, j ≠ n; the fold for
+    /// a secondary arm) up to the force limit.
+    ///
+    /// # Errors
+    /// [`Error::InvalidCount`] for n = 0, j = 0, `points` < 2 or
+    /// `scale_coils` = 0; [`Error::InvalidArgument`] for a bad force limit or
+    /// one at or below the branch's starting force;
+    /// [`Error::SecondaryNeedsOtherPeriods`] for a secondary branch with
+    /// j = n.
+    pub fn run(&self, n: u32, branch: Branch) -> Result<ForceExtension> {
+        let (sc, fmax) = self.check(n)?;
+        let path = Path::new(n, branch)?;
+        let mut curve = ForceExtension::new(format!("{branch}, n = {n}"), "k", sc)?;
+        curve.extend(path.sample(fmax, self.points, self.max_force_scaled)?);
+        Ok(curve)
+    }
+
+    /// The whole secondary branch j of an n-coil rod as one curve: the
+    /// lower arm from the force limit down to the fold, then the upper arm
+    /// back up (the parameter k therefore first decreases, then increases).
+    /// `points` is shared between the arms.
+    ///
+    /// # Errors
+    /// As [`Trace::run`].
+    pub fn secondary(&self, n: u32, j: u32) -> Result<ForceExtension> {
+        let (sc, fmax) = self.check(n)?;
+        check_j(j)?;
+        let lower = Path::new(n, Branch::Secondary { j, arm: Arm::Lower })?;
+        let upper = Path::new(n, Branch::Secondary { j, arm: Arm::Upper })?;
+        let half = self.points / 2;
+        let mut a = lower.sample(fmax, half.max(2), self.max_force_scaled)?;
+        let b = upper.sample(fmax, (self.points - half).max(2), self.max_force_scaled)?;
+        a.reverse();
+        let mut curve = ForceExtension::new(format!("secondary j = {j}, n = {n}"), "k", sc)?;
+        curve.extend(a);
+        // the fold point is on both arms: keep it once
+        curve.extend(b.into_iter().skip(1));
+        Ok(curve)
+    }
+}
+
+/// A branch as a function of the parameter σ ∈ [0, 1].
+struct Path {
+    n: u32,
+    branch: Branch,
+    q0: f64,
+    squared: bool,
+}
+
+impl Path {
+    fn new(n: u32, branch: Branch) -> Result<Self> {
+        let (q0, squared) = match branch {
+            Branch::Upsilon | Branch::Alpha => (0.0, false),
+            Branch::Theta { j } => {
+                check_j(j)?;
+                if j == n {
+                    (0.0, false)
+                } else {
+                    (
+                        -bifurcation(n, j)?.elliptic_modulus().complement().ln(),
+                        false,
+                    )
+                }
+            }
+            Branch::Secondary { j, .. } => {
+                let f = secondary_fold(n, j)?;
+                (-f.solution().elliptic_modulus().complement().ln(), true)
+            }
+        };
+        Ok(Self {
+            n,
+            branch,
+            q0,
+            squared,
+        })
+    }
+
+    fn at_q(&self, q: f64) -> Result<Elastica> {
+        let md = Modulus::from_complement((-q).exp())?;
+        match self.branch {
+            Branch::Upsilon => Ok(primary(self.n, md, Family::Upsilon)),
+            Branch::Alpha => Ok(primary(self.n, md, Family::Alpha)),
+            Branch::Theta { j } => {
+                let v = Elastica::nonsymmetric_with(self.n, j, md)?;
+                // at the bifurcation point itself rounding may leave no root:
+                // fall back to the bifurcation solution
+                match v.first() {
+                    Some(e) => Ok(*e),
+                    None => Ok(bifurcation(self.n, j)?.solution()),
+                }
+            }
+            Branch::Secondary { j, arm } => Elastica::secondary_arm(self.n, j, arm, md),
+        }
+    }
+
+    fn q_of(&self, sigma: f64, q_end: f64) -> f64 {
+        let s = if self.squared { sigma * sigma } else { sigma };
+        self.q0 + (q_end - self.q0) * s
+    }
+
+    /// The parameter q where the force reaches `fmax`.
+    fn q_end(&self, fmax: f64, limit_scaled: f64) -> Result<f64> {
+        let start = self.at_q(self.q0)?;
+        if start.force() >= fmax {
+            return Err(Error::InvalidArgument {
+                name: "max_force_scaled",
+                value: limit_scaled,
+                allowed: "a limit above the force where the branch starts",
+            });
+        }
+        let mut lo = self.q0;
+        let mut hi = (self.q0 + 1.0).max(2.0 * self.q0);
+        while self.at_q(hi)?.force() < fmax {
+            lo = hi;
+            hi *= 2.0;
+            if hi >= Q_MAX {
+                hi = Q_MAX;
+                break;
+            }
+        }
+        for _ in 0..60 {
+            let mid = 0.5 * (lo + hi);
+            if self.at_q(mid)?.force() < fmax {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        Ok(hi)
+    }
+
+    fn sample(&self, fmax: f64, points: usize, limit_scaled: f64) -> Result<Vec<ForcePoint>> {
+        let q_end = self.q_end(fmax, limit_scaled)?;
+        let eval = |sigma: f64| -> Result<ForcePoint> {
+            let e = self.at_q(self.q_of(sigma, q_end))?;
+            Ok(ForcePoint {
+                extension: e.extension(),
+                force: e.force(),
+                parameter: e.modulus(),
+            })
+        };
+        let uniform = (points / 2).max(2);
+        let mut pts: Vec<(f64, ForcePoint)> = Vec::with_capacity(points);
+        for i in 0..uniform {
+            let s = i as f64 / (uniform - 1) as f64;
+            pts.push((s, eval(s)?));
+        }
+        let (mut zmin, mut zmax, mut fmin, mut fmx) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+        for (_, p) in &pts {
+            zmin = zmin.min(p.extension);
+            zmax = zmax.max(p.extension);
+            fmin = fmin.min(p.force);
+            fmx = fmx.max(p.force);
+        }
+        let zs = (zmax - zmin).max(f64::MIN_POSITIVE);
+        let fs = (fmx - fmin).max(f64::MIN_POSITIVE);
+        let len = |a: &ForcePoint, b: &ForcePoint| {
+            ((b.extension - a.extension) / zs).hypot((b.force - a.force) / fs)
+        };
+        let mut heap = BinaryHeap::new();
+        for w in pts.windows(2) {
+            heap.push(Segment::new(len(&w[0].1, &w[1].1), w[0], w[1]));
+        }
+        while pts.len() < points {
+            let Some(seg) = heap.pop() else { break };
+            let s = 0.5 * (seg.a.0 + seg.b.0);
+            let p = eval(s)?;
+            pts.push((s, p));
+            heap.push(Segment::new(len(&seg.a.1, &p), seg.a, (s, p)));
+            heap.push(Segment::new(len(&p, &seg.b.1), (s, p), seg.b));
+        }
+        pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+        Ok(pts.into_iter().map(|(_, p)| p).collect())
+    }
+}
+
+struct Segment {
+    len: f64,
+    a: (f64, ForcePoint),
+    b: (f64, ForcePoint),
+}
+
+impl Segment {
+    fn new(len: f64, a: (f64, ForcePoint), b: (f64, ForcePoint)) -> Self {
+        Self { len, a, b }
+    }
+}
+
+impl PartialEq for Segment {
+    fn eq(&self, other: &Self) -> bool {
+        self.len.total_cmp(&other.len).is_eq()
+    }
+}
+impl Eq for Segment {}
+impl PartialOrd for Segment {
+    fn partial_cmp(&self, other: &Self) -> Option<core::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+impl Ord for Segment {
+    fn cmp(&self, other: &Self) -> core::cmp::Ordering {
+        self.len.total_cmp(&other.len)
+    }
+}

@@ -1,0 +1,11 @@
+//! `elastica`: closed forms against the mpmath tables (tests/data/gen_elastica.py),
+//! direct integration of the planar Kirchhoff equations, the energy
+//! derivative, the series and bad input.
+#[path = "../common/mod.rs"]
+mod common;
+
+mod data;
+mod physics;
+mod series;
+mod tables;
+mod trace;

@@ -1,0 +1,1 @@
+//! Limits, special values and bad input.
