@@ -8,6 +8,8 @@
 use core::f64::consts::PI;
 
 use hockle::bvp::Collocation;
+use hockle::continuation::{Continuation, PointKind};
+use hockle::elastica::Elastica;
 use hockle::rod::{Control, Equilibrium, Rod};
 
 /// Collocation with m = 4 on 100 uniform intervals: the error at mesh
@@ -110,4 +112,97 @@ fn planar_solutions_are_the_elastica_to_1e_8_in_force() {
         assert_eq!(e.loops(), 4);
         assert!(e.quaternion_drift() < 1e-12);
     }
+}
+
+/// The υ-branch force of `hockle::elastica` at extension `dz` (secant on k;
+/// the extension is increasing in k on the primary υ-branch).
+fn elastica_force_at(dz: f64) -> f64 {
+    let ext = |k: f64| Elastica::symmetric(4, k).unwrap().upsilon.extension() - dz;
+    let (mut a, mut b) = (0.05, 1.0 - 1e-12);
+    let (mut fa, mut fb) = (ext(a), ext(b));
+    assert!(fa < 0.0 && fb > 0.0);
+    for _ in 0..200 {
+        // Illinois-free bisection/secant hybrid: safe and plenty fast here.
+        let c = if (b - a) > 1e-3 {
+            0.5 * (a + b)
+        } else {
+            b - fb * (b - a) / (fb - fa)
+        };
+        let fc = ext(c);
+        if fc.abs() < 1e-15 || (b - a).abs() < 1e-15 {
+            return Elastica::symmetric(4, c).unwrap().upsilon.force();
+        }
+        if fc < 0.0 {
+            (a, fa) = (c, fc);
+        } else {
+            (b, fb) = (c, fc);
+        }
+    }
+    Elastica::symmetric(4, 0.5 * (a + b))
+        .unwrap()
+        .upsilon
+        .force()
+}
+
+#[test]
+fn planar_branch_is_the_elastica_and_has_its_out_of_plane_branch_point() {
+    // Start on the planar primary υ-branch at F/(2πn)² = 0.1 (mpmath row),
+    // then continue in the force with hockle::continuation, detecting
+    // branch points (sign changes of the bordered Jacobian's determinant).
+    let scale = (8.0 * PI).powi(2);
+    let row = table().into_iter().nth(2).unwrap();
+    let rod = Rod::nikolai(4, PI / 2.0, 10.0, 0.05).unwrap();
+    // 128 intervals: the O(h⁸) error at the mesh points is 2e-8 relative
+    // with 64 intervals at F/(2πn)² ≈ 1.1 (tight hockles), 256× less here.
+    let solver = Collocation::new().intervals(128);
+    let start = solver
+        .solve(
+            &rod,
+            planar_guess(row.force, row.delta),
+            &[row.force, row.extension, PI / 2.0],
+        )
+        .unwrap();
+    let mut w = vec![1.0; 13];
+    w[7..10].fill(1.0 / (scale * scale));
+    w[10..13].fill(1e-3);
+    let branch = Continuation::new(Rod::FORCE)
+        .solver(solver)
+        .weights(&w)
+        .parameter_weight(1.0 / (scale * scale))
+        .step(0.01)
+        .step_bounds(1e-9, 0.05)
+        .max_steps(500)
+        .stop_at(1.2 * scale)
+        .run(&rod, &start, ())
+        .unwrap();
+    // Every point is planar and on hockle::elastica's υ-branch (two
+    // independent models: quaternion collocation vs Jacobi functions).
+    for p in branch.points().iter().step_by(6) {
+        let e = Equilibrium::new(rod, p.solution().clone()).unwrap();
+        assert!(e.planarity() < 1e-10);
+        let f = elastica_force_at(e.extension());
+        let err = ((e.force() - f) / f).abs();
+        assert!(
+            err < PLANAR_FORCE_REL,
+            "Δz = {}: rod {} vs elastica {f}: {err:e}",
+            e.extension(),
+            e.force()
+        );
+    }
+    // One out-of-plane branch point (the paper's diamond) on the primary
+    // branch below F/(2πn)² = 1.2, measured at F/(2πn)² = 0.70456; the
+    // imperfect spring (θ0 = 89.8°) pops out below it, at 0.6026.
+    let bps: Vec<_> = branch
+        .points()
+        .iter()
+        .filter(|p| p.kind() == PointKind::BranchPoint)
+        .collect();
+    assert_eq!(bps.len(), 1, "{:?}", branch.termination());
+    let e = Equilibrium::new(rod, bps[0].solution().clone()).unwrap();
+    assert!(e.planarity() < 1e-10);
+    assert!(
+        e.force_scaled() > 0.6026 && e.force_scaled() < 0.8,
+        "{}",
+        e.force_scaled()
+    );
 }
