@@ -437,6 +437,12 @@ impl Pull {
     /// Never fails: a run that cannot go on keeps its points and says why in
     /// [`PullRun::termination`].
     pub fn run<O: PullObserver>(&self, mut observer: O) -> PullRun {
+        self.run_with(&mut observer)
+    }
+
+    /// [`Pull::run`] with a borrowed observer (to read what it collected
+    /// afterwards).
+    pub fn run_with<O: PullObserver>(&self, observer: &mut O) -> PullRun {
         let start = Instant::now();
         let mut run = PullRun {
             rod: self.rod,
@@ -449,7 +455,7 @@ impl Pull {
             intervals: self.intervals,
             elapsed: Duration::ZERO,
         };
-        run.termination = match self.trace(&mut run, &mut observer) {
+        run.termination = match self.trace(&mut run, observer) {
             Ok(t) => t,
             Err(e) => PullTermination::StartFailed(e),
         };
