@@ -75,6 +75,10 @@ pub enum FoldKind {
     /// A local minimum of the force: the spring lands on a branch with one
     /// loop fewer.
     MinimumForce,
+    /// A local maximum of the extension (a jump under extension control).
+    MaximumExtension,
+    /// A local minimum of the extension.
+    MinimumExtension,
 }
 
 impl core::fmt::Display for FoldKind {
@@ -82,6 +86,8 @@ impl core::fmt::Display for FoldKind {
         f.write_str(match self {
             FoldKind::MaximumForce => "maximum-force fold",
             FoldKind::MinimumForce => "minimum-force fold",
+            FoldKind::MaximumExtension => "maximum-extension fold",
+            FoldKind::MinimumExtension => "minimum-extension fold",
         })
     }
 }
@@ -116,7 +122,8 @@ impl core::fmt::Display for Fold {
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
 pub enum PullTermination {
-    /// The force reached the requested value.
+    /// The controlled load (force, or extension under extension control)
+    /// reached the requested value.
     ReachedForce,
     /// The step limit was reached.
     MaxSteps(usize),
@@ -134,7 +141,7 @@ pub enum PullTermination {
 impl core::fmt::Display for PullTermination {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match self {
-            PullTermination::ReachedForce => f.write_str("reached the requested force"),
+            PullTermination::ReachedForce => f.write_str("reached the requested load"),
             PullTermination::MaxSteps(n) => write!(f, "stopped after the maximum of {n} steps"),
             PullTermination::Stopped => f.write_str("stopped by the observer"),
             PullTermination::StepTooSmall { error } => {
@@ -249,13 +256,20 @@ impl PullRun {
         }
     }
 
-    /// The pop-outs: each maximum-force fold paired with the
-    /// minimum-force fold that follows it.
+    /// The pop-outs: each maximum fold of the controlled load paired with
+    /// the minimum fold that follows it (force folds under force control,
+    /// extension folds under extension control).
     #[must_use]
     pub fn pop_outs(&self) -> Vec<(Fold, Fold)> {
         self.folds
             .windows(2)
-            .filter(|w| w[0].kind == FoldKind::MaximumForce && w[1].kind == FoldKind::MinimumForce)
+            .filter(|w| {
+                matches!(
+                    (w[0].kind, w[1].kind),
+                    (FoldKind::MaximumForce, FoldKind::MinimumForce)
+                        | (FoldKind::MaximumExtension, FoldKind::MinimumExtension)
+                )
+            })
             .map(|w| (w[0], w[1]))
             .collect()
     }
@@ -314,11 +328,13 @@ pub struct Pull {
 }
 
 impl Pull {
-    /// A pull of `rod` (always under force control) with the defaults:
+    /// A pull of `rod` under force control (dead load; folds in the force
+    /// are where the spring jumps) with the defaults:
     ///
     /// | setting | default |
     /// |---|---|
     /// | [`to_force_scaled`](Self::to_force_scaled) | 3 (the paper's Fig. spring) |
+    /// | [`extension_control`](Self::extension_control) | off |
     /// | [`intervals`](Self::intervals) | 48 uniform mesh intervals (folds converged to 6e-7 against 128) |
     /// | [`points`](Self::points) | 4 Gauss points per interval |
     /// | [`step`](Self::step) | Δs = 2e-3 first, within [1e-7, 0.02] |
@@ -341,11 +357,22 @@ impl Pull {
         }
     }
 
-    /// Stop once F/(2πn)² exceeds `f` (also accepts a negative target for
-    /// compression).
+    /// Force control, stopping once F/(2πn)² exceeds `f` (a negative
+    /// target pushes instead).
     #[must_use]
     pub fn to_force_scaled(mut self, f: f64) -> Self {
+        self.rod = self.rod.with_control(Control::Force);
         self.target = f;
+        self
+    }
+
+    /// Extension control (hard device: Δz prescribed, F_z an unknown; folds
+    /// in Δz are where the spring jumps), stopping once Δz exceeds `dz`
+    /// (or falls below it, if it is below the rest extension cos θ0).
+    #[must_use]
+    pub fn extension_control(mut self, dz: f64) -> Self {
+        self.rod = self.rod.with_control(Control::Extension);
+        self.target = dz;
         self
     }
 
@@ -471,20 +498,37 @@ impl Pull {
         let solver = self.validate()?;
         let rod = self.rod;
         let scale = self.scale();
-        let sign = if self.target >= 0.0 { 1.0 } else { -1.0 };
         let p0 = rod.parameters_at_rest();
+        let (param, theta, sign) = match rod.control() {
+            Control::Force => (
+                Rod::FORCE,
+                1.0 / (scale * scale),
+                if self.target >= 0.0 { 1.0 } else { -1.0 },
+            ),
+            Control::Extension => (
+                Rod::EXTENSION,
+                1.0,
+                if self.target >= p0[Rod::EXTENSION] {
+                    1.0
+                } else {
+                    -1.0
+                },
+            ),
+        };
         let s0 = solver.solve(&rod, |s: f64| rod.unstressed(s), &p0)?;
-        // A second point a small force away gives the first secant.
+        // A second point a small load away gives the first secant.
         let mut p1 = p0;
-        p1[Rod::FORCE] = sign * 1e-4 * scale;
+        match rod.control() {
+            Control::Force => p1[Rod::FORCE] = sign * 1e-4 * scale,
+            Control::Extension => p1[Rod::EXTENSION] += sign * 1e-4,
+        }
         let s1 = solver.solve(&rod, &s0, &p1)?;
         run.newton_iterations += u64::from(s0.newton().iterations + s1.newton().iterations);
 
-        let arc_solver = solver.clone().free_parameters(&[Rod::FORCE]);
+        let arc_solver = solver.clone().free_parameters(&[param]);
         let weights = weights(scale);
-        let theta = 1.0 / (scale * scale);
-        let prev = Cached::new(s0, &weights, theta);
-        let mut cur = Cached::new(s1, &weights, theta);
+        let prev = Cached::new(s0, &weights, theta, param);
+        let mut cur = Cached::new(s1, &weights, theta, param);
         let mut arclength = prev.distance(&cur);
         for (c, a) in [(&prev, 0.0), (&cur, arclength)] {
             let eq = Equilibrium::new(rod, c.solution.clone())?;
@@ -504,7 +548,7 @@ impl Pull {
             let next = match attempt {
                 Ok(sol) => {
                     run.newton_iterations += u64::from(sol.newton().iterations);
-                    let next = Cached::new(sol, &weights, theta);
+                    let next = Cached::new(sol, &weights, theta, param);
                     let step = cur.distance(&next);
                     let t_new = Tangent::secant(&cur, &next, step);
                     if tangent.cos_angle(&t_new, &weights, theta) < self.max_angle.cos() {
@@ -538,10 +582,11 @@ impl Pull {
             arclength += step;
             // A fold: the force turned between the previous secant and this one.
             if tangent.dlambda * t_new.dlambda < 0.0 {
-                let kind = if tangent.dlambda * sign > 0.0 {
-                    FoldKind::MaximumForce
-                } else {
-                    FoldKind::MinimumForce
+                let kind = match (rod.control(), tangent.dlambda > 0.0) {
+                    (Control::Force, true) => FoldKind::MaximumForce,
+                    (Control::Force, false) => FoldKind::MinimumForce,
+                    (Control::Extension, true) => FoldKind::MaximumExtension,
+                    (Control::Extension, false) => FoldKind::MinimumExtension,
                 };
                 let located = if self.locate_folds {
                     self.locate(&rod, &arc_solver, &cur, &t_new, step, run)
@@ -569,7 +614,11 @@ impl Pull {
             if observer.point(&eq, &pt).is_break() {
                 return Ok(PullTermination::Stopped);
             }
-            if sign * pt.force_scaled >= sign * self.target {
+            let reached = match rod.control() {
+                Control::Force => pt.force_scaled,
+                Control::Extension => pt.extension,
+            };
+            if sign * reached >= sign * self.target {
                 return Ok(PullTermination::ReachedForce);
             }
             cur = next;
@@ -612,11 +661,11 @@ impl Pull {
             anchor: cur,
             tangent,
             sigma,
-            weights: weights(self.scale()),
-            theta: 1.0 / (self.scale() * self.scale()),
+            weights: cur.weights,
+            theta: cur.theta,
         };
         let mut p = *cur.parameters();
-        p[Rod::FORCE] += sigma * tangent.dlambda;
+        p[cur.param] += sigma * tangent.dlambda;
         let guess = |s: f64| {
             let mut y = [0.0; 13];
             cur.solution.eval_into(s, &mut y);
@@ -640,12 +689,11 @@ impl Pull {
         step: f64,
         run: &mut PullRun,
     ) -> Result<Solution> {
-        let mut samples: Vec<(f64, f64, Option<Solution>)> =
-            vec![(0.0, before.parameters()[0], None)];
+        let mut samples: Vec<(f64, f64, Option<Solution>)> = vec![(0.0, before.lambda(), None)];
         for sigma in [0.5 * step, step] {
             let sol = self.corrector(rod, solver, before, tangent, sigma)?;
             run.newton_iterations += u64::from(sol.newton().iterations);
-            samples.push((sigma, sol.parameters()[0], Some(sol)));
+            samples.push((sigma, sol.parameters()[before.param], Some(sol)));
         }
         for _ in 0..12 {
             let (a, b, c) = (&samples[0], &samples[1], &samples[2]);
@@ -662,7 +710,7 @@ impl Pull {
             }
             let sol = self.corrector(rod, solver, before, tangent, x)?;
             run.newton_iterations += u64::from(sol.newton().iterations);
-            let f = sol.parameters()[0];
+            let f = sol.parameters()[before.param];
             samples.push((x, f, Some(sol)));
             // Keep the three samples closest to the new abscissa.
             samples.sort_by(|p, q| (p.0 - x).abs().total_cmp(&(q.0 - x).abs()));
@@ -674,16 +722,12 @@ impl Pull {
             .into_iter()
             .filter_map(|s| s.2.map(|sol| (s.1, sol)))
             .max_by(|p, q| {
-                let sgn = if p.0 > before.parameters()[0] {
-                    1.0
-                } else {
-                    -1.0
-                };
+                let sgn = if p.0 > before.lambda() { 1.0 } else { -1.0 };
                 (sgn * p.0).total_cmp(&(sgn * q.0))
             });
         best.map(|b| b.1).ok_or(Error::InvalidArgument {
             name: "fold",
-            value: before.parameters()[0],
+            value: before.lambda(),
             allowed: "a fold bracketed by converged points",
         })
     }
@@ -710,10 +754,11 @@ struct Cached {
     quad: Vec<f64>,
     weights: [f64; 13],
     theta: f64,
+    param: usize,
 }
 
 impl Cached {
-    fn new(solution: Solution, weights: &[f64; 13], theta: f64) -> Self {
+    fn new(solution: Solution, weights: &[f64; 13], theta: f64, param: usize) -> Self {
         let nodes = solution.collocation_points();
         let cv = solution.collocation_values();
         let values = (0..nodes.len())
@@ -736,6 +781,7 @@ impl Cached {
             quad,
             weights: *weights,
             theta,
+            param,
         }
     }
 
@@ -744,6 +790,11 @@ impl Cached {
             .parameters()
             .try_into()
             .expect("rod solutions have 3 parameters")
+    }
+
+    /// The continuation parameter λ.
+    fn lambda(&self) -> f64 {
+        self.parameters()[self.param]
     }
 
     fn index(&self, s: f64) -> Option<usize> {
@@ -762,7 +813,7 @@ impl Cached {
             }
             t += self.quad[k] * v;
         }
-        let dl = self.parameters()[0] - other.parameters()[0];
+        let dl = self.lambda() - other.lambda();
         (t + theta * dl * dl).sqrt()
     }
 }
@@ -822,7 +873,7 @@ impl Tangent {
             nodes: a.nodes.clone(),
             values,
             quad: a.quad.clone(),
-            dlambda: (b.parameters()[0] - a.parameters()[0]) / step,
+            dlambda: (b.lambda() - a.lambda()) / step,
             from: a.solution.clone(),
             to: b.solution.clone(),
             step,
@@ -925,7 +976,7 @@ impl Problem for Arclength<'_> {
         for i in 0..13 {
             v += self.weights[i] * (y[i] - a[i]) * t[i];
         }
-        let dl = p[Rod::FORCE] - self.anchor.parameters()[0];
+        let dl = p[self.anchor.param] - self.anchor.lambda();
         h[1] = v + self.theta * dl * self.tangent.dlambda - self.sigma;
     }
     fn integrand_jacobian(
@@ -943,7 +994,7 @@ impl Problem for Arclength<'_> {
         for i in 0..13 {
             dhdy[(1, i)] = self.weights[i] * t[i];
         }
-        dhdp[(1, Rod::FORCE)] = self.theta * self.tangent.dlambda;
+        dhdp[(1, self.anchor.param)] = self.theta * self.tangent.dlambda;
         true
     }
 }

@@ -79,3 +79,34 @@ fn three_pop_outs_converged_with_q_conserved() {
         );
     }
 }
+
+#[test]
+fn extension_control_traces_the_same_curve_and_jumps_at_extension_folds() {
+    // Under a hard device (Δz prescribed) the first pop-out needs no jump
+    // (Δz stays monotone through it) and the second one is a fold in Δz.
+    let run = Pull::new(rod()).extension_control(0.7).run(());
+    assert!(
+        matches!(run.termination, hockle::rod::PullTermination::ReachedForce),
+        "{run}"
+    );
+    let kinds: Vec<FoldKind> = run.folds.iter().map(|f| f.kind).collect();
+    assert_eq!(
+        kinds,
+        [FoldKind::MaximumExtension, FoldKind::MinimumExtension],
+        "{run}"
+    );
+    // The same solution set as under force control: the largest sampled
+    // force up to Δz = 0.45 (between the first force fold at Δz = 0.4098 and
+    // the minimum at 0.4641) is the first force fold, 0.602621 (the cascade
+    // test's value at this mesh), within the sampling of the run (steps
+    // ≤ 0.02 in the norm: a quadratic maximum is missed by ≲ 1e-4).
+    let fmax = run
+        .points
+        .iter()
+        .take_while(|p| p.extension < 0.45)
+        .map(|p| p.force_scaled)
+        .fold(0.0, f64::max);
+    assert!((fmax - 0.602_621).abs() < 1e-3, "{fmax}");
+    // And the Δz fold sits next to the second force fold (Δz = 0.631767).
+    assert!((run.folds[0].extension - 0.631_767).abs() < 1e-3, "{run}");
+}
