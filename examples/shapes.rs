@@ -37,8 +37,8 @@ impl PullObserver for Collect {
 
     fn fold(&mut self, e: &Equilibrium, f: &Fold) -> ControlFlow<()> {
         let what = match f.kind {
-            hockle::rod::FoldKind::MaximumForce => "max",
-            hockle::rod::FoldKind::MinimumForce => "min",
+            hockle::rod::FoldKind::MaximumForce | hockle::rod::FoldKind::MaximumExtension => "max",
+            hockle::rod::FoldKind::MinimumForce | hockle::rod::FoldKind::MinimumExtension => "min",
         };
         self.shapes.push((
             format!("{what} fold, F/(2πn)² = {:.3}", f.force_scaled),
