@@ -1,5 +1,11 @@
-//! Pulling the spring: pseudo-arclength continuation in the force from the
-//! unstressed helix, with the pop-outs (folds in the force) located.
+//! Pulling the spring: pseudo-arclength continuation in the force (or the
+//! extension) from the unstressed helix, with the pop-outs (folds) located.
+//!
+//! This driver is written on [`Collocation::solve`] alone (the rod's
+//! phase condition needs the previous point as `y_ref`, and the arclength
+//! condition is one more integral condition), so it owns its secant
+//! predictor, step control and fold location; `crate::continuation` is the
+//! general tool (used by the tests for branch points at θ0 = 90°).
 //!
 //! ```text
 //!   unknowns  x = (y(·), λ),   λ = F_z
