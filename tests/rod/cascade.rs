@@ -110,3 +110,18 @@ fn extension_control_traces_the_same_curve_and_jumps_at_extension_folds() {
     // And the Δz fold sits next to the second force fold (Δz = 0.631767).
     assert!((run.folds[0].extension - 0.631_767).abs() < 1e-3, "{run}");
 }
+
+#[test]
+fn no_cascade_at_large_pitch_or_without_anisotropy() {
+    // The paper's Figs. helix and aniso: at θ0 = 60° and for the isotropic
+    // rod (A/B = 1) the spring unwinds without pop-outs (no folds at all).
+    for (theta0, a_over_b) in [(60.0_f64, 10.0), (89.8, 1.0)] {
+        let rod = Rod::nikolai(4, theta0.to_radians(), a_over_b, 0.05).unwrap();
+        let run = Pull::new(rod).run(());
+        assert!(
+            matches!(run.termination, hockle::rod::PullTermination::ReachedForce),
+            "{run}"
+        );
+        assert!(run.folds.is_empty(), "{run}");
+    }
+}
