@@ -125,3 +125,27 @@ fn no_cascade_at_large_pitch_or_without_anisotropy() {
         assert!(run.folds.is_empty(), "{run}");
     }
 }
+
+#[test]
+fn the_slinky_overwinds_and_the_isotropic_spring_unwinds() {
+    // The paper's Fig. aniso remarks: the slinky (A/B = 0.1) overwinds under
+    // tension, the isotropic rod unwinds like a helix. Measured at
+    // F/(2πn)² = 0.6: 5.18 and 3.0 turns about the axis (4 at rest).
+    let turns_at = |a_over_b: f64| {
+        let rod = Rod::nikolai(4, 89.8_f64.to_radians(), a_over_b, 0.05).unwrap();
+        let mut last = 0.0;
+        let run = Pull::new(rod)
+            .to_force_scaled(0.6)
+            .run(|e: &Equilibrium, _: &PullPoint| {
+                last = e.axial_turns();
+                ControlFlow::Continue(())
+            });
+        assert!(
+            matches!(run.termination, hockle::rod::PullTermination::ReachedForce),
+            "{run}"
+        );
+        last
+    };
+    assert!(turns_at(0.1) > 5.0);
+    assert!(turns_at(1.0) < 3.5);
+}

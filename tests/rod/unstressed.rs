@@ -118,6 +118,7 @@ fn outputs_of_the_solved_helix() {
     assert!((e.extension() - rod.theta0().cos()).abs() < 1e-11);
     assert!(e.energy() < 1e-20);
     assert_eq!(e.loops(), 4);
+    assert!((e.axial_turns() - 4.0).abs() < 1e-9);
     assert!((e.turning_number() - 4.0).abs() < 1e-9);
     // Distance from the best plane through the axis: the radius R0.
     let r0 = rod.theta0().sin() / (8.0 * PI);
