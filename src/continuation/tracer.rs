@@ -1161,8 +1161,10 @@ impl<'a, P: Problem + ?Sized> Trace<'a, P> {
                 }
             }
         }
-        // Location overwrites the factorisation at the new point.
-        self.factored_at_x0 = found.is_empty();
+        // Whatever factorisation is current (at the new point, a located
+        // point or an earlier chord point) preconditions the next corrector;
+        // Newton refreshes it when the contraction degrades.
+        self.factored_at_x0 = true;
         found.sort_by(|a, b| a.1.total_cmp(&b.1));
         let base = self.arclength;
         for (cs, s, kind, stop) in found {
