@@ -356,6 +356,16 @@ impl fmt::Debug for Continuation {
     }
 }
 
+impl fmt::Display for Continuation {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "pseudo-arclength continuation in p[{}]: ds = {}, |ds| ∈ [{:e}, {}], {} steps max; {}",
+            self.parameter, self.ds, self.ds_min, self.ds_max, self.max_steps, self.solver
+        )
+    }
+}
+
 impl Continuation {
     /// Continuation in the parameter with index `parameter` (into p), with
     /// the defaults:

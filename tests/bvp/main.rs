@@ -387,3 +387,51 @@ fn peak_memory_probe() {
     assert!(r.is_err());
     eprintln!("N={n}: VmHWM before {before} kB, after {} kB", hwm());
 }
+
+/// y'' = a² y, y(0) = c0, y(1) = c1 with exact solution
+/// (c0 sinh(a(1 − s)) + c1 sinh(a s)) / sinh(a).
+struct Hyperbolic {
+    a: f64,
+    c0: f64,
+    c1: f64,
+}
+
+impl hockle::bvp::Problem for Hyperbolic {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn parameter_count(&self) -> usize {
+        0
+    }
+    fn boundary_count(&self) -> usize {
+        2
+    }
+    fn rhs(&self, _s: f64, y: &[f64], _p: &[f64], f: &mut [f64]) {
+        f[0] = y[1];
+        f[1] = self.a * self.a * y[0];
+    }
+    fn boundary(&self, y0: &[f64], y1: &[f64], _p: &[f64], g: &mut [f64]) {
+        g[0] = y0[0] - self.c0;
+        g[1] = y1[0] - self.c1;
+    }
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+    /// Any such problem, any m in 2..=7 with N = 12: the mesh values match the
+    /// closed form to the superconvergent bound (a h)^(2m)·max|y| (a ≤ 3,
+    /// h = 1/12 gives ≤ 0.25^(2m) ≤ 4e-3·… for m = 2, far smaller above),
+    /// plus Newton/rounding 1e-12.
+    #[test]
+    fn linear_problems_match_closed_form(a in 0.1f64..3.0, c0 in -2.0f64..2.0, c1 in -2.0f64..2.0, m in 2usize..=7) {
+        let p = Hyperbolic { a, c0, c1 };
+        let sol = Collocation::new().points(m).intervals(12).solve(&p, |s: f64| [c0 + (c1 - c0) * s, c1 - c0], &[]).unwrap();
+        let ymax = c0.abs().max(c1.abs()).max(1e-3) * a.cosh();
+        let bound = (a / 12.0).powi(2 * m as i32) * ymax + 1e-12;
+        for (j, s) in sol.mesh().points().to_vec().iter().enumerate() {
+            let exact = (c0 * (a * (1.0 - s)).sinh() + c1 * (a * s).sinh()) / a.sinh();
+            let e = (sol.at_mesh(j)[0] - exact).abs();
+            proptest::prop_assert!(e <= bound, "a={a} m={m} s={s}: error {e:e} > bound {bound:e}");
+        }
+    }
+}
