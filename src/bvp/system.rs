@@ -31,6 +31,10 @@ use crate::linalg::{
     solve_upper, solve_upper_left,
 };
 
+/// Interval blocks up to this size (m·n) use the plain LU loops; larger
+/// ones faer's SIMD kernels (whose call overhead dominates tiny blocks).
+const SMALL_BLOCK: usize = 24;
+
 /// Unknowns (or a direction in their space). `p` always has the problem's
 /// full parameter length; only the free entries are unknowns.
 #[derive(Debug, Clone, PartialEq)]
@@ -643,7 +647,17 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
             let wa = &mut self.wa[wbase..wbase + mn * wcols];
             let piv = &mut self.wpiv[j * mn..(j + 1) * mn];
             let pinv = &mut self.wpinv[..];
-            let d = match lu_solve_block(wa, mn, wcols, piv, pinv, &mut self.ws) {
+            let res = if mn <= SMALL_BLOCK {
+                lu_panel(wa, mn, wcols, mn, piv).inspect(|_| {
+                    let (lu, extra) = wa.split_at_mut(mn * mn);
+                    for col in extra.chunks_exact_mut(mn) {
+                        solve_upper(lu, mn, mn, col);
+                    }
+                })
+            } else {
+                lu_solve_block(wa, mn, wcols, piv, pinv, &mut self.ws)
+            };
+            let d = match res {
                 Ok(d) => d,
                 Err(b) => {
                     self.ycol = ycol;
@@ -1018,7 +1032,13 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
                 *kv = -v;
             }
             let wa = &self.wa[j * mn * wcols..(j + 1) * mn * wcols];
-            lu_solve_vec(wa, mn, &self.wpiv[j * mn..(j + 1) * mn], kap, &mut self.tmp);
+            let piv = &self.wpiv[j * mn..(j + 1) * mn];
+            if mn <= SMALL_BLOCK {
+                apply_lower(wa, mn, mn, piv, kap);
+                solve_upper(wa, mn, mn, kap);
+            } else {
+                lu_solve_vec(wa, mn, piv, kap, &mut self.tmp);
+            }
             for i in 0..n {
                 let mut s = -r.cont[j * n + i];
                 for k in 0..m {

@@ -356,6 +356,16 @@ impl fmt::Debug for Continuation {
     }
 }
 
+impl fmt::Display for Continuation {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "pseudo-arclength continuation in p[{}]: ds = {}, |ds| ∈ [{:e}, {}], {} steps max; {}",
+            self.parameter, self.ds, self.ds_min, self.ds_max, self.max_steps, self.solver
+        )
+    }
+}
+
 impl Continuation {
     /// Continuation in the parameter with index `parameter` (into p), with
     /// the defaults:
@@ -1161,8 +1171,10 @@ impl<'a, P: Problem + ?Sized> Trace<'a, P> {
                 }
             }
         }
-        // Location overwrites the factorisation at the new point.
-        self.factored_at_x0 = found.is_empty();
+        // Whatever factorisation is current (at the new point, a located
+        // point or an earlier chord point) preconditions the next corrector;
+        // Newton refreshes it when the contraction degrades.
+        self.factored_at_x0 = true;
         found.sort_by(|a, b| a.1.total_cmp(&b.1));
         let base = self.arclength;
         for (cs, s, kind, stop) in found {

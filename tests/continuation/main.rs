@@ -79,6 +79,11 @@ fn branch_points_of_the_trivial_branch_and_switching() {
     assert_eq!(bps.len(), 5, "{branch}");
     for (k, bp) in bps.iter().enumerate() {
         let exact = (k + 1) as f64;
+        eprintln!(
+            "quadratic BP {}: error {:.2e}",
+            k + 1,
+            bp.parameter() - exact
+        );
         // Gauss collocation eigenvalue error ~ (kπh)^(2m) C: for k = 5,
         // h = 1/40, m = 4 that is ≈ 6e-4·C with C ~ 1e-4; location to 1e-10.
         // Measured errors are below 1e-8 for k ≤ 5.
@@ -102,6 +107,10 @@ fn branch_points_of_the_trivial_branch_and_switching() {
         let eps = p1.solution().eval(0.5)[0];
         assert!(eps.abs() > 1e-3, "left the trivial branch: u(1/2) = {eps}");
         let ratio = (p1.parameter().powi(2) - 1.0) / eps;
+        eprintln!(
+            "switch {dir:?}: u(1/2) = {eps:.3e}, (p²−1)/u(½) / (8/(3π³)) = {:.4}",
+            ratio / slope
+        );
         // First-order bifurcation formula: relative error O(ε) ≈ 2%.
         assert!(
             (ratio / slope - 1.0).abs() < 0.05,
@@ -135,6 +144,11 @@ fn euler_buckling_loads_and_post_buckled_branch() {
     let pi2 = std::f64::consts::PI.powi(2);
     for (k, bp) in bps.iter().enumerate() {
         let exact = ((k + 1) * (k + 1)) as f64 * pi2;
+        eprintln!(
+            "euler BP {}: relative error {:.2e}",
+            k + 1,
+            bp.parameter() / exact - 1.0
+        );
         // Relative: collocation eigenvalue error (kπh)^8·C ≲ 1e-9.
         assert!(
             (bp.parameter() / exact - 1.0).abs() < 1e-8,
@@ -167,6 +181,10 @@ fn euler_buckling_loads_and_post_buckled_branch() {
         let exact = 4.0 * ellip_k_agm(k).powi(2);
         worst = worst.max((p.parameter() / exact - 1.0).abs());
     }
+    eprintln!(
+        "euler post-buckled: {} points, worst relative error {worst:.2e}",
+        post.points().len()
+    );
     // m = 4, N = 40, solutions up to θ(0) = 2.5 (k = 0.95): O(h^8) relative
     // error measured ~1e-10; 1e-8 bounds it.
     assert!(worst < 1e-8, "worst relative error {worst:e}");
