@@ -37,6 +37,8 @@ pub(crate) struct Member {
     pub kp: f64,
     /// K − π/2, without cancellation for small m.
     pub d: f64,
+    /// E(k) if already known (NaN otherwise), for the extension.
+    pub big_e: f64,
     pub modulus: Modulus,
 }
 
@@ -49,6 +51,7 @@ impl Member {
             big_k,
             kp: modulus.k_prime(),
             d: k_minus_half_pi(modulus.m(), big_k),
+            big_e: f64::NAN,
             modulus,
         }
     }
@@ -81,8 +84,16 @@ impl Member {
     /// The [`Ends`] of the member at t (with the Jacobi functions at t).
     pub fn ends(&self, jac: Jacobi) -> Ends {
         match self.family {
-            Family::Upsilon => Ends::Upsilon { c: self.c, jac },
-            Family::Alpha => Ends::Alpha { c: self.c, jac },
+            Family::Upsilon => Ends::Upsilon {
+                c: self.c,
+                jac,
+                e: self.big_e,
+            },
+            Family::Alpha => Ends::Alpha {
+                c: self.c,
+                jac,
+                e: self.big_e,
+            },
         }
     }
 

@@ -57,6 +57,15 @@ pub fn upsilon_omega(n: u32, k: f64) -> f64 {
 /// Ω − πn on the primary υ-branch, π³n³k⁶/128 + O(k⁸) (compare with
 /// [`Elastica::omega_excess`](super::Elastica::omega_excess), not with Ω − πn
 /// formed by subtraction).
+///
+/// ```
+/// use hockle::elastica::{Elastica, series};
+/// let (n, k) = (3, 0.01);
+/// let e = Elastica::symmetric(n, k)?.upsilon;
+/// // relative error O(k²)·(πn)²/… of a tiny quantity: 1e-3 here
+/// assert!((series::upsilon_omega_excess(n, k) / e.omega_excess() - 1.0).abs() < 1e-3);
+/// # Ok::<(), hockle::Error>(())
+/// ```
 #[must_use]
 pub fn upsilon_omega_excess(n: u32, k: f64) -> f64 {
     let p = pn(n);
@@ -65,6 +74,13 @@ pub fn upsilon_omega_excess(n: u32, k: f64) -> f64 {
 
 /// Physical tension on the primary υ-branch: π²n²k² + O(k⁸) (the k⁴ and k⁶
 /// terms vanish; the paper's F is twice this).
+///
+/// ```
+/// use hockle::elastica::{Elastica, series};
+/// let e = Elastica::symmetric(2, 0.01)?.upsilon;
+/// assert!((series::upsilon_force(2, 0.01) / e.force() - 1.0).abs() < 1e-12);
+/// # Ok::<(), hockle::Error>(())
+/// ```
 #[must_use]
 pub fn upsilon_force(n: u32, k: f64) -> f64 {
     let p = pn(n);
@@ -78,6 +94,14 @@ pub fn upsilon_force(n: u32, k: f64) -> f64 {
 /// ```
 ///
 /// The paper prints 1225/8192 for 175/1024 = 1400/8192.
+///
+/// ```
+/// use hockle::elastica::{Elastica, series};
+/// let e = Elastica::symmetric(2, 0.02)?.upsilon;
+/// // error O(k⁸) relative to Δz = O(k²): ~1e-10 here
+/// assert!((series::upsilon_extension(2, 0.02) / e.extension() - 1.0).abs() < 1e-9);
+/// # Ok::<(), hockle::Error>(())
+/// ```
 #[must_use]
 pub fn upsilon_extension(n: u32, k: f64) -> f64 {
     let p = pn(n);
@@ -86,12 +110,26 @@ pub fn upsilon_extension(n: u32, k: f64) -> f64 {
 }
 
 /// Ω on the primary α-branch: πn(1 + k²/2 + 3k⁴/8 + (40 − π²n²)k⁶/128) + O(k⁸).
+///
+/// ```
+/// use hockle::elastica::{Elastica, series};
+/// let e = Elastica::symmetric(2, 0.02)?.alpha;
+/// assert!((series::alpha_omega(2, 0.02) - e.omega()).abs() < 1e-12);
+/// # Ok::<(), hockle::Error>(())
+/// ```
 #[must_use]
 pub fn alpha_omega(n: u32, k: f64) -> f64 {
     pn(n) + alpha_omega_excess(n, k)
 }
 
 /// Ω − πn on the primary α-branch: πn(k²/2 + 3k⁴/8 + (40 − π²n²)k⁶/128) + O(k⁸).
+///
+/// ```
+/// use hockle::elastica::{Elastica, series};
+/// let e = Elastica::symmetric(2, 0.02)?.alpha;
+/// assert!((series::alpha_omega_excess(2, 0.02) / e.omega_excess() - 1.0).abs() < 1e-9);
+/// # Ok::<(), hockle::Error>(())
+/// ```
 #[must_use]
 pub fn alpha_omega_excess(n: u32, k: f64) -> f64 {
     let p = pn(n);
@@ -100,6 +138,13 @@ pub fn alpha_omega_excess(n: u32, k: f64) -> f64 {
 }
 
 /// Physical tension on the primary α-branch: π²n²k²(1 + k² + k⁴) + O(k⁸).
+///
+/// ```
+/// use hockle::elastica::{Elastica, series};
+/// let e = Elastica::symmetric(2, 0.02)?.alpha;
+/// assert!((series::alpha_force(2, 0.02) / e.force() - 1.0).abs() < 1e-9);
+/// # Ok::<(), hockle::Error>(())
+/// ```
 #[must_use]
 pub fn alpha_force(n: u32, k: f64) -> f64 {
     let p = pn(n);
@@ -114,6 +159,13 @@ pub fn alpha_force(n: u32, k: f64) -> f64 {
 /// ```
 ///
 /// The paper prints 457/8192 for 79/1024 = 632/8192.
+///
+/// ```
+/// use hockle::elastica::{Elastica, series};
+/// let e = Elastica::symmetric(2, 0.02)?.alpha;
+/// assert!((series::alpha_extension(2, 0.02) / e.extension() - 1.0).abs() < 1e-9);
+/// # Ok::<(), hockle::Error>(())
+/// ```
 #[must_use]
 pub fn alpha_extension(n: u32, k: f64) -> f64 {
     let p = pn(n);
@@ -123,6 +175,14 @@ pub fn alpha_extension(n: u32, k: f64) -> f64 {
 
 /// Extension of the ϑ-branches (eq11; independent of n and j):
 /// Δz = k²(1/8 + k²/16 + 41k⁴/1024) + O(k⁸).
+///
+/// ```
+/// use hockle::elastica::{Elastica, series};
+/// let e = Elastica::nonsymmetric(5, 5, 0.05)?[0];
+/// // relative error ≈ 0.23 k⁶ ≈ 4e-9
+/// assert!((series::theta_extension(0.05) / e.extension() - 1.0).abs() < 1e-7);
+/// # Ok::<(), hockle::Error>(())
+/// ```
 #[must_use]
 pub fn theta_extension(k: f64) -> f64 {
     let m = k * k;
@@ -131,6 +191,13 @@ pub fn theta_extension(k: f64) -> f64 {
 
 /// Physical tension on ϑ_n (j = n, eq12 halved):
 /// F = π²n²k²(1 + k²/2 + 11k⁴/32) + O(k⁸).
+///
+/// ```
+/// use hockle::elastica::{Elastica, series};
+/// let e = Elastica::nonsymmetric(5, 5, 0.05)?[0];
+/// assert!((series::theta_force(5, 0.05) / e.force() - 1.0).abs() < 1e-7);
+/// # Ok::<(), hockle::Error>(())
+/// ```
 #[must_use]
 pub fn theta_force(n: u32, k: f64) -> f64 {
     let p = pn(n);
@@ -153,6 +220,13 @@ pub fn symmetric_stiffness(n: u32) -> f64 {
 
 /// Linear response dF/dΔz at the ring of ϑ_n: 8π²n², three times
 /// [`symmetric_stiffness`].
+///
+/// ```
+/// use hockle::elastica::{Elastica, series};
+/// let e = Elastica::nonsymmetric(1, 1, 1e-4)?[0];
+/// assert!((e.force() / e.extension() / series::nonsymmetric_stiffness(1) - 1.0).abs() < 1e-7);
+/// # Ok::<(), hockle::Error>(())
+/// ```
 #[must_use]
 pub fn nonsymmetric_stiffness(n: u32) -> f64 {
     let p = pn(n);

@@ -3,9 +3,10 @@
 use core::f64::consts::FRAC_PI_2;
 
 use super::family::{Family, Member};
+use super::integrals::SMALL_M;
 use super::solution::{Branch, Elastica, check_modulus, check_n, modulus_from_k};
 use crate::error::Result;
-use crate::special::{Modulus, ellip_k, jacobi};
+use crate::special::{Modulus, ellip_e, ellip_k, jacobi};
 
 /// The two primary symmetric solutions at one modulus k (same k, different Ω).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -46,8 +47,9 @@ impl Elastica {
     /// [`Modulus::from_complement`] to go as close to 1 as m₁ = 1e-300.
     ///
     /// # Accuracy
-    /// Force ≤ 1e-14 relative, extension ≤ 1e-13 relative (k ≥ 0.05; below,
-    /// a few 1e-16 absolute) against the mpmath tables (`tests/elastica`).
+    /// Ω and force ≤ 1.4e-15 relative, extension ≤ 2e-14 relative for every
+    /// k from 1e-3 to k′ = 1e-10 (n = 1..8) against the 50-digit mpmath tables
+    /// (`tests/elastica`); no loss as k → 0 (see the [module docs](super)).
     ///
     /// # Example
     /// ```
@@ -77,9 +79,15 @@ impl Elastica {
         check_n(n)?;
         let modulus = check_modulus(modulus)?;
         let big_k = ellip_k(modulus);
+        // both shapes need E(k) for the extension when m ≥ ¼: compute it once
+        let big_e = if modulus.m() >= SMALL_M {
+            ellip_e(modulus)
+        } else {
+            f64::NAN
+        };
         Ok(Symmetric {
-            upsilon: primary_with(n, modulus, Family::Upsilon, big_k),
-            alpha: primary_with(n, modulus, Family::Alpha, big_k),
+            upsilon: primary_with(n, modulus, Family::Upsilon, big_k, big_e),
+            alpha: primary_with(n, modulus, Family::Alpha, big_k, big_e),
         })
     }
 
@@ -102,12 +110,36 @@ impl Elastica {
     }
 }
 
-pub(crate) fn primary(n: u32, modulus: Modulus, family: Family) -> Elastica {
-    primary_with(n, modulus, family, ellip_k(modulus))
+/// Below this m the small-k guess t ≈ n(K − π/2) is used.
+const GUESS_SWITCH: f64 = 0.45;
+
+/// Near k = 1, dn t ≈ sech t away from K: the υ end solves
+/// 2(nK − t) sech t = πn and the α end τ = K − t solves
+/// 2((n + 1)K − τ) sech τ = πn; three fixed-point steps of
+/// t = acosh(2(cK − t)/(πn)).
+fn asymptotic_guess(n: u32, big_k: f64, family: Family) -> f64 {
+    let pn = core::f64::consts::PI * f64::from(n);
+    let c = match family {
+        Family::Upsilon => f64::from(n),
+        Family::Alpha => f64::from(n) + 1.0,
+    };
+    let mut t = 0.0_f64;
+    for _ in 0..3 {
+        t = (2.0 * (c * big_k - t) / pn).max(1.0).acosh();
+    }
+    match family {
+        Family::Upsilon => t,
+        Family::Alpha => big_k - t,
+    }
 }
 
-fn primary_with(n: u32, modulus: Modulus, family: Family, big_k: f64) -> Elastica {
-    let member = Member::new(family, n, n, big_k, modulus);
+pub(crate) fn primary(n: u32, modulus: Modulus, family: Family) -> Elastica {
+    primary_with(n, modulus, family, ellip_k(modulus), f64::NAN)
+}
+
+fn primary_with(n: u32, modulus: Modulus, family: Family, big_k: f64, big_e: f64) -> Elastica {
+    let mut member = Member::new(family, n, n, big_k, modulus);
+    member.big_e = big_e;
     let branch = match family {
         Family::Upsilon => Branch::Upsilon,
         Family::Alpha => Branch::Alpha,
@@ -117,10 +149,10 @@ fn primary_with(n: u32, modulus: Modulus, family: Family, big_k: f64) -> Elastic
     } else {
         // t ≈ n(K − π/2) for small k (both families); near k = 1 the end
         // sits about ln(4K/π) from the extremum.
-        let guess = if modulus.m() < 0.8 {
+        let guess = if modulus.m() < GUESS_SWITCH {
             f64::from(n) * (big_k - FRAC_PI_2)
         } else {
-            (4.0 * big_k / core::f64::consts::PI).ln()
+            asymptotic_guess(n, big_k, family)
         };
         // υ: g(0) = 2nK − πn ≥ 0 decreasing; α: g(0) = 2nKk' − πn ≤ 0 increasing
         member.solve(0.0, big_k, family == Family::Upsilon, guess)

@@ -326,6 +326,15 @@ impl Helix {
     /// Strain energy U = ½[B(κ − κ0)² + C(τ − τ0)²] of the helix at angle θ
     /// (minimised over ρ). [`Self::force`] is dU/dΔz.
     ///
+    /// ```
+    /// use hockle::helix::{Helix, Stiffness};
+    /// let h = Helix::new(3, 1.0, Stiffness::new(2.0, 1.0, 1.5)?)?;
+    /// let (t, d) = (0.7, 1e-6);
+    /// let fd = (h.energy(t + d)? - h.energy(t - d)?) / ((t + d).cos() - (t - d).cos());
+    /// assert!((fd / h.force(t)? - 1.0).abs() < 1e-7);
+    /// # Ok::<(), hockle::Error>(())
+    /// ```
+    ///
     /// # Errors
     /// [`Error::InvalidArgument`] if θ is not in (0, π).
     pub fn energy(&self, theta: f64) -> Result<f64> {
@@ -340,6 +349,15 @@ impl Helix {
 
     /// Spring constant dF/dΔz at the unstressed state:
     /// (2πn)² B C / (sin²θ0 (B sin²θ0 + C cos²θ0)).
+    ///
+    /// ```
+    /// use hockle::helix::{Helix, Stiffness};
+    /// let h = Helix::new(4, 1.2, Stiffness::nikolai(10.0, 0.05)?)?;
+    /// let t = 1.2 - 1e-7;
+    /// let slope = h.force(t)? / (h.extension(t)? - h.extension(1.2)?);
+    /// assert!((slope / h.spring_constant() - 1.0).abs() < 1e-5);
+    /// # Ok::<(), hockle::Error>(())
+    /// ```
     #[must_use]
     pub fn spring_constant(&self) -> f64 {
         let (s0, c0) = self.theta0.sin_cos();

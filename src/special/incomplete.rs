@@ -1,25 +1,46 @@
 //! Incomplete elliptic integrals F(φ, k) and E(φ, k) for any real φ.
 
 use super::Modulus;
-use super::carlson::{rd, rf};
+use super::carlson::{rf_rd_roots, rf_roots};
 use super::complete::{ellip_e, ellip_k};
 
 /// π split as a double-double: `PI_HI + PI_LO` = π to ~1e-32.
 pub(crate) const PI_HI: f64 = core::f64::consts::PI;
 pub(crate) const PI_LO: f64 = 1.224_646_799_147_353_2e-16;
 
-/// φ = jπ + r with |r| ≤ π/2 (up to rounding), r accurate to ~1 ulp of r
-/// for |j| < 2⁵³: j·π is formed as a double-double, and φ − fl(jπ) is exact
-/// by Sterbenz's lemma.
+/// x rounded to the nearest integer, ties to even, by the 1.5·2⁵² trick for
+/// |x| < 2⁵¹ (without SSE4.1 `f64::round_ties_even` is a library call).
+#[inline(always)]
+pub(crate) fn round_ties_even(x: f64) -> f64 {
+    const MAGIC: f64 = 6_755_399_441_055_744.0;
+    if x.abs() < 2_251_799_813_685_248.0 {
+        (x + MAGIC) - MAGIC
+    } else {
+        x.round_ties_even()
+    }
+}
+
+/// π in three parts (Cody–Waite): `PI_A` and `PI_B` have 33 significant
+/// bits, so j·PI_A and j·PI_B are exact for |j| < 2²⁰; the sum is π to
+/// 2e-37.
+const PI_A: f64 = 3.141_592_653_468_251_2;
+const PI_B: f64 = 1.215_420_101_260_793_2e-10;
+const PI_C: f64 = 4.044_532_497_591_901e-21;
+
+/// φ = jπ + r with |r| ≤ π/2 (up to rounding), r accurate to ~1 ulp of r:
+/// φ − j·PI_A is exact (Sterbenz), the later parts only round once each.
+/// Beyond |j| = 2²⁰ the products are formed exactly with FMA instead.
 pub(crate) fn reduce_pi(phi: f64) -> (f64, f64) {
-    let j = (phi / PI_HI).round_ties_even();
+    let j = round_ties_even(phi / PI_HI);
     if j == 0.0 {
         return (0.0, phi);
     }
+    if j.abs() < 1_048_576.0 {
+        return (j, ((phi - j * PI_A) - j * PI_B) - j * PI_C);
+    }
     let p = j * PI_HI;
     let e = j.mul_add(PI_HI, -p); // exact error of j·PI_HI
-    let r = (phi - p) - e - j * PI_LO;
-    (j, r)
+    (j, (phi - p) - e - j * PI_LO)
 }
 
 /// φ = jπ + r as [`reduce_pi`], with s = sin|r|, c = cos|r| ≥ 0: when
@@ -36,20 +57,68 @@ fn reduce_pi_sin_cos(phi: f64) -> (f64, f64, f64, f64) {
     (j, r, s, c)
 }
 
-/// F and E on 0 ≤ r ≤ π/2 from sin r, cos r (c = cos r ≥ 0).
+/// F and E on 0 ≤ r ≤ π/2 from s = sin r, c = cos r ≥ 0, without folding.
 ///
 /// ```text
 /// Δ² = c² + m₁ s²                        (never 1 − m s², which cancels)
 /// F  = s R_F(c², Δ², 1)                  DLMF 19.25.5
 /// E  = m₁ F + (m m₁/3) s³ R_D(c², 1, Δ²) + m s c / Δ      DLMF 19.25.9
 /// ```
-pub(crate) fn f_e_reduced(s: f64, c: f64, modulus: Modulus) -> (f64, f64) {
-    let (m, mc) = (modulus.m(), modulus.complement());
+#[inline]
+fn f_direct(s: f64, c: f64, mc: f64) -> f64 {
     let c2 = c * c;
     let d2 = c2 + mc * s * s;
-    let f = s * rf(c2, d2, 1.0);
-    let e = mc * f + m * mc / 3.0 * s * s * s * rd(c2, 1.0, d2) + m * s * c / d2.sqrt();
-    (f, e)
+    s * rf_roots(c2, d2, 1.0, c, d2.sqrt(), 1.0)
+}
+
+#[inline]
+fn e_direct(s: f64, c: f64, m: f64, mc: f64) -> f64 {
+    let c2 = c * c;
+    let d2 = c2 + mc * s * s;
+    let d = d2.sqrt();
+    let (rf, rd) = rf_rd_roots(c2, 1.0, d2, c, 1.0, d);
+    mc * (s * rf) + m * mc / 3.0 * s * s * s * rd + m * s * c / d
+}
+
+/// Near π/2 (c² < m₁ s²/4) the complementary amplitude ψ, tan ψ = cot r / k′
+/// (DLMF 19.11.2 with ψ + r "adding up" to K), is small:
+///
+/// ```text
+/// sin ψ = c/Δ,  cos ψ = k′ s/Δ,  F(r) = K − F(ψ),  E(r) = E − E(ψ) + m s sin ψ
+/// ```
+/// so E(r) near E is the complete E minus a small correction instead of an
+/// R_D term of size ~1 (its ~2-ulp error would show, as r → π/2 and m → 1
+/// leave E(r) with condition number ~0).
+fn folds(s: f64, c: f64, mc: f64) -> bool {
+    c * c < 0.25 * mc * (s * s)
+}
+
+fn psi(s: f64, c: f64, mc: f64) -> (f64, f64) {
+    let d = (c * c + mc * s * s).sqrt();
+    (c / d, mc.sqrt() * s / d)
+}
+
+/// F on 0 ≤ r ≤ π/2 from sin r, cos r ≥ 0.
+pub(crate) fn f_reduced(s: f64, c: f64, modulus: Modulus) -> f64 {
+    let mc = modulus.complement();
+    if folds(s, c, mc) {
+        let (sp, cp) = psi(s, c, mc);
+        ellip_k(modulus) - f_direct(sp, cp, mc)
+    } else {
+        f_direct(s, c, mc)
+    }
+}
+
+/// E on 0 ≤ r ≤ π/2 from sin r, cos r ≥ 0.
+pub(crate) fn e_reduced(s: f64, c: f64, modulus: Modulus) -> f64 {
+    let (m, mc) = (modulus.m(), modulus.complement());
+    if folds(s, c, mc) {
+        let (sp, cp) = psi(s, c, mc);
+        let ep = e_direct(sp, cp, m, mc);
+        (ellip_e(modulus) - ep) + m * s * sp
+    } else {
+        e_direct(s, c, m, mc)
+    }
 }
 
 /// Incomplete elliptic integral of the first kind F(φ, k), any real φ.
@@ -66,6 +135,11 @@ pub(crate) fn f_e_reduced(s: f64, c: f64, modulus: Modulus) -> (f64, f64) {
 /// NaN or infinite φ gives NaN. F(0, k) = 0; F(φ, 0) = φ; F is odd in φ.
 /// For k = 1 (m₁ = 0), F = atanh(sin φ) for |φ| < π/2 and ±∞ beyond.
 ///
+/// # Accuracy
+/// Max 1.83 ulp (1.18 ulp normalised by 1 + the condition number in φ)
+/// over 2120 points, |φ| ≤ 100, m₁ down to 1e-300.
+/// See the [module docs](crate::special#accuracy) for the table.
+///
 /// # Examples
 /// ```
 /// use hockle::special::{Modulus, ellip_f, ellip_k};
@@ -79,12 +153,13 @@ pub(crate) fn f_e_reduced(s: f64, c: f64, modulus: Modulus) -> (f64, f64) {
 /// # References
 /// DLMF §19.2, §19.25; B. C. Carlson, Numer. Algorithms 10 (1995) 13–26.
 #[must_use]
+#[inline]
 pub fn ellip_f(phi: f64, modulus: Modulus) -> f64 {
     if !phi.is_finite() {
         return f64::NAN;
     }
     let (j, r, s, c) = reduce_pi_sin_cos(phi);
-    let f = f_e_reduced(s, c, modulus).0.copysign(r);
+    let f = f_reduced(s, c, modulus).copysign(r);
     if j == 0.0 {
         f
     } else {
@@ -107,6 +182,11 @@ pub fn ellip_f(phi: f64, modulus: Modulus) -> f64 {
 /// NaN or infinite φ gives NaN. E(0, k) = 0; E(φ, 0) = φ; E(φ, 1) = sin φ on
 /// [−π/2, π/2]; E is odd in φ.
 ///
+/// # Accuracy
+/// Max 1.85 ulp (1.35 normalised) over 2120 points, |φ| ≤ 100, m₁ down
+/// to 1e-300.
+/// See the [module docs](crate::special#accuracy) for the table.
+///
 /// # Examples
 /// ```
 /// use hockle::special::{Modulus, ellip_e_inc};
@@ -118,12 +198,13 @@ pub fn ellip_f(phi: f64, modulus: Modulus) -> f64 {
 /// # References
 /// DLMF §19.2, §19.25.
 #[must_use]
+#[inline]
 pub fn ellip_e_inc(phi: f64, modulus: Modulus) -> f64 {
     if !phi.is_finite() {
         return f64::NAN;
     }
     let (j, r, s, c) = reduce_pi_sin_cos(phi);
-    let e = f_e_reduced(s, c, modulus).1.copysign(r);
+    let e = e_reduced(s, c, modulus).copysign(r);
     if j == 0.0 {
         e
     } else {

@@ -3,8 +3,8 @@
 use core::fmt;
 
 use super::Modulus;
-use super::complete::ellip_k;
-use super::incomplete::{PI_HI, PI_LO};
+use super::complete::ellip_k_dd;
+use super::incomplete::{PI_HI, PI_LO, round_ties_even};
 
 /// The Jacobi elliptic functions at one point, with the amplitude.
 ///
@@ -94,23 +94,33 @@ pub(crate) struct Reduced {
 }
 
 pub(crate) fn reduce_2k(u: f64, modulus: Modulus) -> Reduced {
-    let k = ellip_k(modulus);
-    let two_k = 2.0 * k;
-    let j = (u / two_k).round();
+    let (k_hi, k_lo) = ellip_k_dd(modulus);
+    let k = k_hi + k_lo;
+    let j = round_ties_even(u / (2.0 * k));
     if j == 0.0 {
         return Reduced { j, r: u, k };
     }
-    // r = u − j·2K with one rounding.
-    let r = (-j).mul_add(two_k, u);
+    // r = u − j·2K with 2K = 2k_hi + 2k_lo a double-double: split 2k_hi
+    // into 27 + 26 bits (Dekker) so that j·hi and j·lo are exact for
+    // |j| < 2²⁶; u − j·hi is then exact (Sterbenz).
+    let two_k = 2.0 * k_hi;
+    let r = if j.abs() < 67_108_864.0 {
+        let c = 134_217_729.0 * two_k;
+        let hi = c - (c - two_k);
+        let lo = two_k - hi;
+        ((u - j * hi) - j * lo) - j * (2.0 * k_lo)
+    } else {
+        (-j).mul_add(two_k, u) - j * (2.0 * k_lo)
+    };
     Reduced { j, r, k }
 }
 
-/// Below this |u| the Maclaurin series (to u⁹ for sn, u⁸ for cn, dn) is
-/// exact to rounding: the first neglected coefficient is ≤ 0.014 for every
-/// m ∈ [0, 1], and 0.014 · (1/32)¹⁰ ≈ 1.2e-17.
-const SERIES_MAX: f64 = 1.0 / 32.0;
+/// Below this |u| the Maclaurin series (to u¹¹ for sn, u¹⁰ for cn, dn) is
+/// exact to rounding: the first neglected coefficient is ≤ 0.0057 for every
+/// m ∈ [0, 1] (m = 1, sech), and 0.0057 · (1/16)¹² ≈ 2e-17.
+const SERIES_MAX: f64 = 1.0 / 16.0;
 
-/// (sn, cn, dn) for 0 ≤ v ≤ K/2: halve to |v| ≤ 1/32, Maclaurin series,
+/// (sn, cn, dn) for 0 ≤ v ≤ K/2: halve to |v| ≤ 1/16, Maclaurin series,
 /// then double back (conditional duplication, after Fukushima 2013).
 ///
 /// While cn and dn are near 1 the doubling carries their complements
@@ -126,6 +136,9 @@ const SERIES_MAX: f64 = 1.0 / 32.0;
 /// dn(2v)     = √(cn²(2v) + m₁ sn²(2v))       (once dn < ½, which needs cn < ½)
 /// ```
 pub(crate) fn sncndn_small(v: f64, m: f64, mc: f64) -> (f64, f64, f64) {
+    if mc < HYPERBOLIC_MC {
+        return sncndn_near_one(v, mc);
+    }
     let mut n = 0;
     let mut x = v;
     while x > SERIES_MAX {
@@ -137,17 +150,22 @@ pub(crate) fn sncndn_small(v: f64, m: f64, mc: f64) -> (f64, f64, f64) {
     let m3 = m2 * m;
     let s5 = (1.0 + 14.0 * m + m2) / 120.0;
     let s7 = (1.0 + 135.0 * m + 135.0 * m2 + m3) / 5040.0;
-    let s9 = (1.0 + 1228.0 * m + 5478.0 * m2 + 1228.0 * m3 + m2 * m2) / 362_880.0;
-    let mut sn = x * (1.0 + x2 * (-(1.0 + m) / 6.0 + x2 * (s5 + x2 * (-s7 + x2 * s9))));
+    let m4 = m2 * m2;
+    let s9 = (1.0 + 1228.0 * m + 5478.0 * m2 + 1228.0 * m3 + m4) / 362_880.0;
+    let s11 = (1.0 + 11069.0 * m + 165_826.0 * (m2 + m3) + 11069.0 * m4 + m4 * m) / 39_916_800.0;
+    let mut sn =
+        x * (1.0 + x2 * (-(1.0 + m) / 6.0 + x2 * (s5 + x2 * (-s7 + x2 * (s9 - x2 * s11)))));
     let c4 = (1.0 + 4.0 * m) / 24.0;
     let c6 = (1.0 + 44.0 * m + 16.0 * m2) / 720.0;
     let c8 = (1.0 + 408.0 * m + 912.0 * m2 + 64.0 * m3) / 40320.0;
     // y = 1 − cn, z = 1 − dn.
-    let mut y = x2 * (0.5 - x2 * (c4 - x2 * (c6 - x2 * c8)));
+    let c10 = (1.0 + 3688.0 * m + 30768.0 * m2 + 15808.0 * m3 + 256.0 * m4) / 3_628_800.0;
+    let mut y = x2 * (0.5 - x2 * (c4 - x2 * (c6 - x2 * (c8 - x2 * c10))));
     let d4 = m * (4.0 + m) / 24.0;
     let d6 = m * (16.0 + 44.0 * m + m2) / 720.0;
     let d8 = m * (64.0 + 912.0 * m + 408.0 * m2 + m3) / 40320.0;
-    let mut z = x2 * (0.5 * m - x2 * (d4 - x2 * (d6 - x2 * d8)));
+    let d10 = m * (256.0 + 15808.0 * m + 30768.0 * m2 + 3688.0 * m3 + m4) / 3_628_800.0;
+    let mut z = x2 * (0.5 * m - x2 * (d4 - x2 * (d6 - x2 * (d8 - x2 * d10))));
     // cn, dn carried directly once their complements pass ½ (NaN until then).
     let mut cn = f64::NAN;
     let mut dn = f64::NAN;
@@ -175,7 +193,7 @@ pub(crate) fn sncndn_small(v: f64, m: f64, mc: f64) -> (f64, f64, f64) {
             // separately would let the error in this identity grow 4× per
             // step (only the part consistent with a shift of v grows 2×).
             let c = if cn_direct { cn } else { 1.0 - y };
-            dn = c.mul_add(c, mc * sn * sn).sqrt();
+            dn = (c * c + mc * (sn * sn)).sqrt();
         } else {
             z = 2.0 * m * s2 * c2 / den;
             if z > 0.5 {
@@ -187,6 +205,57 @@ pub(crate) fn sncndn_small(v: f64, m: f64, mc: f64) -> (f64, f64, f64) {
     let c = if cn_direct { cn } else { 1.0 - y };
     let d = if dn_direct { dn } else { 1.0 - z };
     (sn, c, d)
+}
+
+/// Below this m₁ (≈ 9.3e-10) sn, cn, dn start from the expansion about
+/// m = 1 instead of the Maclaurin series.
+const HYPERBOLIC_MC: f64 = 1.0 / (1u64 << 30) as f64;
+
+/// (sn, cn, dn) for 0 ≤ v ≤ K/2 and m₁ < 2⁻³⁰. The first-order expansion
+/// about m = 1 (below) has relative corrections ~ m₁ e^{2v}/16 and a
+/// neglected second-order term ~ (m₁ e^{2v}/16)²: exact to rounding while
+/// m₁ e^{2v} ≤ 2⁻²⁴, i.e. v ≤ v₀ = ½ ln(2⁻²⁴/m₁) ≥ 2. Larger v are halved
+/// to ≤ v₀ and doubled back with cn carried directly (cn ≤ sech 2 there)
+/// and dn = √(cn² + m₁ sn²). Starting the doubling at v₀ ≥ 2 rather than
+/// at 1/16 matters: each step adds ~2 ulp to cn and doubles what came
+/// before, which the condition number (~v) absorbs only from a large start.
+/// For m₁ < 2⁻⁶⁰, v₀ ≥ 12.5 > K/2 and no doubling happens.
+fn sncndn_near_one(v: f64, mc: f64) -> (f64, f64, f64) {
+    let v0 = 0.5 * ((1.0 / (1u64 << 24) as f64) / mc).ln();
+    let mut n = 0;
+    let mut x = v;
+    while x > v0 {
+        x *= 0.5;
+        n += 1;
+    }
+    let (mut sn, mut cn, mut dn) = sncndn_hyperbolic(x, mc);
+    for _ in 0..n {
+        let (s2, c2, d2) = (sn * sn, cn * cn, dn * dn);
+        let den = c2 + s2 * d2;
+        sn = 2.0 * sn * cn * dn / den;
+        cn = (c2 * c2 - mc * (s2 * s2)) / den;
+        dn = (cn * cn + mc * (sn * sn)).sqrt();
+    }
+    (sn, cn, dn)
+}
+
+/// (sn, cn, dn) for m₁ e^{2v} ≤ 2⁻²⁴ (DLMF 22.10.4–6):
+///
+/// ```text
+/// sn = tanh v + ¼ m₁ (sinh v cosh v − v) sech² v
+/// cn = sech v − ¼ m₁ (sinh v cosh v − v) tanh v sech v
+/// dn = sech v + ¼ m₁ (sinh v cosh v + v) tanh v sech v
+/// ```
+fn sncndn_hyperbolic(v: f64, mc: f64) -> (f64, f64, f64) {
+    let t = v.tanh();
+    let ch = v.cosh();
+    let sech = 1.0 / ch;
+    let sc = v.sinh() * ch;
+    let q = 0.25 * mc;
+    let sn = t + q * (sc - v) * (sech * sech);
+    let cn = sech - q * (sc - v) * t * sech;
+    let dn = sech + q * (sc + v) * t * sech;
+    (sn, cn, dn)
 }
 
 /// (sn, cn, dn) for 0 ≤ a ≤ K (a reduced argument), folding a > K/2 with
@@ -210,15 +279,25 @@ pub(crate) fn sncndn_half_period(a: f64, k: f64, m: f64, mc: f64) -> (f64, f64, 
 /// ```text
 /// u = ∫0^{am u} dθ / √(1 − m sin²θ),  sn = sin am, cn = cos am, dn = √(1 − m sn²)   DLMF 22.16.1
 /// ```
-/// Method: u = 2jK + r with |r| ≤ K; for |r| > K/2 the quarter-period shift
-/// (DLMF 22.4.3) maps to K − |r| ∈ [0, K/2]; there the argument is halved to
-/// ≤ 1/32, the Maclaurin series (DLMF 22.10.1–3) evaluated and the
-/// duplication formulas (DLMF 22.8.20, written without cancellation) applied
-/// back. am is atan2(sn, cn) on [−K, K] plus jπ, so it is continuous.
+/// Method: u = 2jK + r with |r| ≤ K (2K in double-double); for |r| > K/2
+/// the quarter-period shift (DLMF 22.4.3) maps to K − |r| ∈ [0, K/2];
+/// there the argument is halved to ≤ 1/16, the Maclaurin series (DLMF
+/// 22.10.1–3) evaluated and the duplication formulas (DLMF 22.8.20, written
+/// without cancellation, carrying 1 − cn and 1 − dn while small) applied
+/// back; for m₁ < 2⁻³⁰ the doubling starts from the expansion about m = 1
+/// (DLMF 22.10.4–6) instead. am is atan2(sn, cn) on [−K, K] plus jπ, so it
+/// is continuous and increasing. See the [module docs](crate::special#methods-and-why).
 ///
 /// # Special cases
 /// NaN or infinite u gives NaN in every field. m = 0: sin u, cos u, 1, u.
 /// m = 1 (m₁ = 0): tanh u, sech u, sech u, gd u.
+///
+/// # Accuracy
+/// Normalised by 1 + the condition number in u (max over 2203 points,
+/// |u| ≤ 1e4, m₁ down to 1e-300): sn 1.18, cn 2.38, dn 1.73, am 1.25 ulp;
+/// no NaN for finite u. Near the zeros of sn and cn at large |u| the raw
+/// error is large, as the rounding of u itself dictates.
+/// See the [module docs](crate::special#accuracy) for the table.
 ///
 /// # Examples
 /// ```
@@ -265,12 +344,13 @@ pub fn jacobi(u: f64, modulus: Modulus) -> Jacobi {
     let (sn, cn, dn) = sncndn_half_period(r.abs(), k, m, mc);
     let am_r = sn.atan2(cn).copysign(r);
     let sn = sn.copysign(r);
-    let odd = j.rem_euclid(2.0) == 1.0;
+    // Doubles of magnitude ≥ 2⁵³ are even integers.
+    let odd = j.abs() < 9_007_199_254_740_992.0 && (j as i64) & 1 == 1;
     let (sn, cn) = if odd { (-sn, -cn) } else { (sn, cn) };
     let am = if j == 0.0 {
         am_r
     } else {
-        j.mul_add(PI_HI, j.mul_add(PI_LO, am_r))
+        j * PI_HI + (j * PI_LO + am_r)
     };
     Jacobi { sn, cn, dn, am }
 }

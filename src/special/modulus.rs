@@ -50,6 +50,7 @@ impl Modulus {
     ///
     /// # Errors
     /// [`Error::InvalidModulus`] if k is NaN or outside [0, 1].
+    #[inline]
     pub fn from_k(k: f64) -> Result<Self> {
         if !(0.0..=1.0).contains(&k) {
             return Err(Error::InvalidModulus {
@@ -68,6 +69,7 @@ impl Modulus {
     ///
     /// # Errors
     /// [`Error::InvalidModulus`] if m is NaN or outside [0, 1].
+    #[inline]
     pub fn from_m(m: f64) -> Result<Self> {
         if !(0.0..=1.0).contains(&m) {
             return Err(Error::InvalidModulus {
@@ -87,6 +89,7 @@ impl Modulus {
     ///
     /// # Errors
     /// [`Error::InvalidModulus`] if m₁ is NaN or outside [0, 1].
+    #[inline]
     pub fn from_complement(mc: f64) -> Result<Self> {
         if !(0.0..=1.0).contains(&mc) {
             return Err(Error::InvalidModulus {
@@ -100,24 +103,28 @@ impl Modulus {
 
     /// The modulus k.
     #[must_use]
+    #[inline]
     pub fn k(self) -> f64 {
         self.k
     }
 
     /// The parameter m = k².
     #[must_use]
+    #[inline]
     pub fn m(self) -> f64 {
         self.m
     }
 
     /// The complementary parameter m₁ = 1 − m = k′².
     #[must_use]
+    #[inline]
     pub fn complement(self) -> f64 {
         self.mc
     }
 
     /// The complementary modulus k′ = √m₁.
     #[must_use]
+    #[inline]
     pub fn k_prime(self) -> f64 {
         self.mc.sqrt()
     }
@@ -125,6 +132,7 @@ impl Modulus {
     /// The complementary `Modulus` (k ↔ k′, m ↔ m₁), so that
     /// `ellip_k(m.complementary())` is K′ = K(k′).
     #[must_use]
+    #[inline]
     pub fn complementary(self) -> Self {
         Self {
             k: self.mc.sqrt(),

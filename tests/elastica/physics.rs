@@ -192,6 +192,53 @@ fn secondary_branches_meet_theta_at_the_bifurcation_and_fold_below_it() {
     }
 }
 
+/// At the bifurcation points the ends sit at curvature extrema, so the end
+/// tangents are along the force (the paper: "along the end-to-end distance
+/// and the z-axis"): ϑ = 2 am u ∈ πℤ at both ends, i.e. x′ = −sin ϑ = 0.
+#[test]
+fn bifurcation_shapes_have_end_tangents_along_the_force() {
+    for (n, j) in [(4u32, 3u32), (4, 5), (7, 2), (2, 6)] {
+        let e = bifurcation(n, j).unwrap().solution();
+        let md = e.elliptic_modulus();
+        for s in [0.0, 1.0] {
+            let theta = 2.0 * jacobi(e.omega() * (e.start() + s), md).am;
+            // am at u ≈ 2jK carries the rounding of u (ε·Ω): |sin ϑ| ≲ 1e-13
+            assert!(theta.sin().abs() < 1e-12, "n={n} j={j} s={s}: ϑ = {theta}");
+        }
+        let c = e.centreline(2001).unwrap();
+        // the first chord is along z: x changes only at second order,
+        // x ≈ ½κ0h² with h = 1/2000, while |Δz| ≈ h
+        let d = c[1] - c[0];
+        let (h, kappa0) = (1.0 / 2000.0, 2.0 * core::f64::consts::PI * f64::from(n));
+        assert!(
+            (d.x.abs() - 0.5 * kappa0 * h * h).abs() < 1e-3 * kappa0 * h * h,
+            "n={n} j={j}: {d}"
+        );
+        assert!((d.y.abs() - h).abs() < 1e-3 * h, "n={n} j={j}: {d}");
+    }
+}
+
+#[test]
+fn k_prime_down_to_1e_150() {
+    // Modulus keeps m₁ exact: F ≈ (2nK)² with K ≈ ½ ln(16/m₁) ≈ 346
+    let md = Modulus::from_complement(1e-300).unwrap();
+    let s = Elastica::symmetric_with(4, md).unwrap();
+    for e in [s.upsilon, s.alpha] {
+        assert!(e.force().is_finite() && e.force() > 1e5);
+        assert!(e.extension() > 0.99 && e.extension() < 1.0, "{e}");
+        for kap in e.end_curvatures() {
+            assert!(
+                rel_err(kap, 8.0 * core::f64::consts::PI) < 1e-10,
+                "{e}: {kap}"
+            );
+        }
+    }
+    let t = Elastica::nonsymmetric_with(4, 4, md).unwrap();
+    assert_eq!(t.len(), 2);
+    let e = Elastica::secondary_arm(4, 3, Arm::Lower, md).unwrap();
+    assert!(e.extension() < 1.0 && e.force().is_finite());
+}
+
 #[test]
 fn bad_input_is_a_typed_error() {
     assert!(matches!(
@@ -258,5 +305,97 @@ proptest! {
         if let Ok(s) = Elastica::symmetric(small, k) {
             let _ = (s.upsilon.energy(), s.alpha.curvature(mc), s.alpha.centreline(4));
         }
+    }
+}
+
+/// Extension on a branch (given as a function of ln m₁) at the force `f`,
+/// by bisection in ln m₁ (the force grows along each branch towards k = 1).
+fn extension_at(branch: impl Fn(f64) -> Option<Elastica>, f: f64, mut lo: f64) -> f64 {
+    let mut hi = -200.0_f64;
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        match branch(mid) {
+            Some(e) if e.force() < f => lo = mid,
+            _ => hi = mid,
+        }
+    }
+    branch(lo).map_or(f64::NAN, |e| e.extension())
+}
+
+/// The paper's asymptotic claims (Section 3.2.2), at equal force: the gap
+/// in extension to the claimed neighbour shrinks (by ≥ 2× from
+/// F/(8π)² = 3 to 30) and at F/(8π)² = 30 is below 5 % of the gap to the
+/// other candidate (every branch tends to Δz → 1, so shrinking alone would
+/// not discriminate):
+/// - α_n approaches υ_(n+1) (not υ_n), and ϑ_j approaches υ_(j+1);
+/// - the υ secondary arms approach ϑ_(j−1) (lower arm, a coil lost) and
+///   ϑ_(j+1) (upper arm, a coil gained); both α arms approach ϑ_j.
+#[test]
+fn asymptotics_of_the_branches_as_the_paper_states() {
+    type B = Box<dyn Fn(f64) -> Option<Elastica>>;
+    let scale = (8.0 * core::f64::consts::PI).powi(2);
+    let md = |x: f64| Modulus::from_complement(x.exp()).unwrap();
+    let gap = |a: &B, b: &B, f: f64| {
+        (extension_at(a.as_ref(), f * scale, -1e-9) - extension_at(b.as_ref(), f * scale, -1e-9))
+            .abs()
+    };
+    let theta = |j: u32| -> B {
+        Box::new(move |x: f64| {
+            Elastica::nonsymmetric_with(j, j, md(x))
+                .ok()?
+                .first()
+                .copied()
+        })
+    };
+    let alpha = |n: u32| -> B {
+        Box::new(move |x: f64| Some(Elastica::symmetric_with(n, md(x)).ok()?.alpha))
+    };
+    let upsilon = |n: u32| -> B {
+        Box::new(move |x: f64| Some(Elastica::symmetric_with(n, md(x)).ok()?.upsilon))
+    };
+    let arm = |j: u32, a: Arm| -> B {
+        Box::new(move |x: f64| Elastica::secondary_arm(4, j, a, md(x)).ok())
+    };
+    let cases: Vec<(&str, B, B, B)> = vec![
+        ("α_4 → υ_5 (not υ_4)", alpha(4), upsilon(5), upsilon(4)),
+        ("ϑ_3 → υ_4 (not υ_3)", theta(3), upsilon(4), upsilon(3)),
+        (
+            "υ secondary j=3 lower → ϑ_2 (not ϑ_4)",
+            arm(3, Arm::Lower),
+            theta(2),
+            theta(4),
+        ),
+        (
+            "υ secondary j=3 upper → ϑ_4 (not ϑ_2)",
+            arm(3, Arm::Upper),
+            theta(4),
+            theta(2),
+        ),
+        (
+            "υ secondary j=2 lower → ϑ_1 (not ϑ_3)",
+            arm(2, Arm::Lower),
+            theta(1),
+            theta(3),
+        ),
+        (
+            "α secondary j=5 lower → ϑ_5 (not ϑ_6)",
+            arm(5, Arm::Lower),
+            theta(5),
+            theta(6),
+        ),
+        (
+            "α secondary j=5 upper → ϑ_5 (not ϑ_4)",
+            arm(5, Arm::Upper),
+            theta(5),
+            theta(4),
+        ),
+    ];
+    for (name, a, near, far) in &cases {
+        let (g3, g30, other) = (gap(a, near, 3.0), gap(a, near, 30.0), gap(a, far, 30.0));
+        eprintln!("{name}: gap {g3:.2e} → {g30:.2e}, other {other:.2e}");
+        assert!(
+            g30 < 0.5 * g3 && g30 < 0.05 * other,
+            "{name}: {g3} → {g30}, other {other}"
+        );
     }
 }
