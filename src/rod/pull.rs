@@ -468,7 +468,11 @@ impl Pull {
     /// Runs the pull, calling `observer` on every point and fold.
     ///
     /// Never fails: a run that cannot go on keeps its points and says why in
-    /// [`PullRun::termination`].
+    /// [`PullRun::termination`]. At θ0 = 90° exactly the unstressed ring has
+    /// both ends at the origin, so F_x, F_y are undetermined at rest and the
+    /// start is singular ([`PullTermination::StartFailed`]); trace the planar
+    /// case from a planar solution with [`crate::continuation`] instead (as
+    /// the `rod` tests do).
     pub fn run<O: PullObserver>(&self, mut observer: O) -> PullRun {
         self.run_with(&mut observer)
     }
