@@ -1367,3 +1367,67 @@ mod tests {
         }
     }
 }
+
+#[cfg(test)]
+mod timing {
+    use super::*;
+
+    struct Troesch;
+    impl Problem for Troesch {
+        fn dim(&self) -> usize {
+            2
+        }
+        fn parameter_count(&self) -> usize {
+            1
+        }
+        fn boundary_count(&self) -> usize {
+            2
+        }
+        fn rhs(&self, _s: f64, y: &[f64], p: &[f64], f: &mut [f64]) {
+            f[0] = y[1];
+            f[1] = p[0] * (p[0] * y[0]).sinh();
+        }
+        fn boundary(&self, y0: &[f64], y1: &[f64], _p: &[f64], g: &mut [f64]) {
+            g[0] = y0[0];
+            g[1] = y1[0] - 1.0;
+        }
+    }
+
+    #[test]
+    #[ignore = "timing probe: cargo test --release --lib system::timing -- --ignored --nocapture"]
+    fn troesch_parts() {
+        let nn = 48;
+        let t: Vec<f64> = (0..=nn).map(|j| j as f64 / nn as f64).collect();
+        let mut sys = System::new(&Troesch, t, Tableau::new(4), vec![], 0).unwrap();
+        let mut x = sys.zero_state();
+        x.p[0] = 5.0;
+        for j in 0..=nn {
+            x.y[2 * j] = j as f64 / nn as f64;
+            x.y[2 * j + 1] = 1.0;
+        }
+        let mut r = sys.zero_residual();
+        let mut d = sys.zero_state();
+        let reps = 2000;
+        let t0 = std::time::Instant::now();
+        for _ in 0..reps {
+            sys.residual(&x, &mut r).unwrap();
+        }
+        let tr = t0.elapsed().as_secs_f64() / reps as f64;
+        let t0 = std::time::Instant::now();
+        for _ in 0..reps {
+            sys.factor(&x).unwrap();
+        }
+        let tf = t0.elapsed().as_secs_f64() / reps as f64;
+        let t0 = std::time::Instant::now();
+        for _ in 0..reps {
+            sys.solve(&r, &mut d).unwrap();
+        }
+        let ts = t0.elapsed().as_secs_f64() / reps as f64;
+        eprintln!(
+            "residual {:.1} µs, factor {:.1} µs, solve {:.1} µs",
+            tr * 1e6,
+            tf * 1e6,
+            ts * 1e6
+        );
+    }
+}

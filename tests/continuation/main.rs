@@ -358,3 +358,60 @@ fn observer_stop_and_iterator() {
     // Termination reasons print.
     assert_eq!(Termination::Stopped.to_string(), "stopped by the observer");
 }
+
+/// y'' + p₀ y = 0, y(0) = y(1) = 0, ∫₀¹ y² ds = p₁: p₀ is the solver's free
+/// parameter (the eigenvalue), p₁ the continuation parameter (amplitude).
+struct EigenAmplitude;
+
+impl Problem for EigenAmplitude {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn parameter_count(&self) -> usize {
+        2
+    }
+    fn boundary_count(&self) -> usize {
+        2
+    }
+    fn integral_count(&self) -> usize {
+        1
+    }
+    fn rhs(&self, _s: f64, y: &[f64], p: &[f64], f: &mut [f64]) {
+        f[0] = y[1];
+        f[1] = -p[0] * y[0];
+    }
+    fn boundary(&self, y0: &[f64], y1: &[f64], _p: &[f64], g: &mut [f64]) {
+        g[0] = y0[0];
+        g[1] = y1[0];
+    }
+    fn integrand(&self, _s: f64, y: &[f64], _r: &[f64], p: &[f64], h: &mut [f64]) {
+        h[0] = y[0] * y[0] - p[1];
+    }
+}
+
+#[test]
+fn continuation_with_a_free_parameter_and_an_integral_condition() {
+    let solver = Collocation::new().intervals(20).free_parameters(&[0]);
+    let start = solver
+        .solve(
+            &EigenAmplitude,
+            |s: f64| [(std::f64::consts::PI * s).sin(), 0.0],
+            &[9.0, 0.5],
+        )
+        .unwrap();
+    let b = Continuation::new(1)
+        .solver(solver)
+        .step(0.1)
+        .stop_at(2.0)
+        .run(&EigenAmplitude, &start, ())
+        .unwrap();
+    assert_eq!(b.termination(), &Termination::ParameterValue(2.0));
+    let pi = std::f64::consts::PI;
+    for p in b.points() {
+        // The eigenvalue stays π² (collocation error ~1e-11 relative at N = 20,
+        // see free_parameter_with_integral_condition) and y(½) = √(2 p₁).
+        assert!((p.parameters()[0] / (pi * pi) - 1.0).abs() < 1e-9);
+        let amp = (2.0 * p.parameter()).sqrt();
+        assert!((p.solution().eval(0.5)[0] - amp).abs() < 1e-9 * amp.max(1.0));
+    }
+}
