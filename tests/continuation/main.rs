@@ -415,3 +415,37 @@ fn continuation_with_a_free_parameter_and_an_integral_condition() {
         assert!((p.solution().eval(0.5)[0] - amp).abs() < 1e-9 * amp.max(1.0));
     }
 }
+
+#[test]
+fn angle_check_rejects_steps_and_reports() {
+    // The Bratu branch turns (dλ/ds decreases from 0.957); an angle limit of
+    // 1e-9 rad cannot be met once the tangent turns, so the step halves down
+    // to ds_min and the run ends with AngleTooLarge, keeping its points.
+    struct Count<'a>(&'a mut usize);
+    impl hockle::continuation::Observer for Count<'_> {
+        fn step_rejected(&mut self, _new_ds: f64) -> ControlFlow<()> {
+            *self.0 += 1;
+            ControlFlow::Continue(())
+        }
+    }
+    let p = Bratu { analytic: true };
+    let start = Collocation::new()
+        .intervals(10)
+        .solve(&p, |_s: f64| [0.0, 0.0], &[0.0])
+        .unwrap();
+    let mut rejected = 0;
+    let b = Continuation::new(0)
+        .step(0.1)
+        .step_bounds(1e-3, 0.5)
+        .max_angle(1e-9)
+        .run(&p, &start, Count(&mut rejected))
+        .unwrap();
+    assert!(
+        matches!(b.termination(), Termination::AngleTooLarge { .. }),
+        "{}",
+        b.termination()
+    );
+    assert!(!b.points().is_empty());
+    // 0.1 → 0.05 → … → 1e-3 is seven halvings (the last clamps to ds_min).
+    assert!(rejected >= 7, "{rejected} rejections");
+}
