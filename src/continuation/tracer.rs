@@ -655,6 +655,13 @@ fn drive<P: Problem + ?Sized, O: Observer>(mut trace: Trace<'_, P>, mut observer
             break;
         }
     }
+    if !stopped {
+        for ds in trace.rejections.drain(..) {
+            if observer.step_rejected(ds).is_break() {
+                break;
+            }
+        }
+    }
     let termination = if stopped {
         Termination::Stopped
     } else {
@@ -1133,7 +1140,8 @@ impl<'a, P: Problem + ?Sized> Trace<'a, P> {
             if self.cont.folds && self.t0.p[q] * c.tangent.p[q] < 0.0 {
                 watches.push((Watch::Fold, self.t0.p[q], c.tangent.p[q]));
             }
-            if self.cont.branch_points && self.det0.sign != c.det.sign {
+            // (A NaN sign means the sparse fallback factorised: no test.)
+            if self.cont.branch_points && self.det0.sign * c.det.sign < 0.0 {
                 let f1 = c.det.sign * (c.det.log_abs - log_ref).exp();
                 watches.push((Watch::BranchPoint, self.det0.sign, f1));
             }
