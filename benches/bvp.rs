@@ -46,25 +46,111 @@ fn bratu_continuation(c: &mut Criterion) {
     });
 }
 
-/// The SciPy comparison problems at matched mesh-point accuracy (see
-/// benches/scipy_bvp.py): Bratu λ = 1 (lower branch) and Troesch μ = 5.
-fn versus_scipy(c: &mut Criterion) {
-    let bratu = Bratu { analytic: true };
-    let s1 = Collocation::new().intervals(8);
-    c.bench_function("scipy_match_bratu_lambda1", |b| {
-        b.iter(|| {
-            s1.solve(&bratu, |_s: f64| [0.0, 0.0], black_box(&[1.0]))
-                .unwrap()
-        })
-    });
-    let s2 = Collocation::new().intervals(24);
-    c.bench_function("scipy_match_troesch_mu5", |b| {
-        b.iter(|| {
-            s2.solve(&Troesch, |s: f64| [s, 1.0], black_box(&[5.0]))
-                .unwrap()
-        })
-    });
+/// Bratu λ = 1 lower branch: max error of y at the mesh points against
+/// the closed form.
+fn bratu_mesh_error(sol: &hockle::bvp::Solution) -> f64 {
+    let theta = {
+        let (mut a, mut b) = (0.0_f64, 4.0_f64);
+        for _ in 0..200 {
+            let c = 0.5 * (a + b);
+            if problems::bratu_lambda(c) < 1.0 {
+                a = c
+            } else {
+                b = c
+            }
+        }
+        0.5 * (a + b)
+    };
+    let exact = |s: f64| -2.0 * (((s - 0.5) * theta / 2.0).cosh() / (theta / 4.0).cosh()).ln();
+    let pts = sol.mesh().points().to_vec();
+    pts.iter()
+        .enumerate()
+        .map(|(j, s)| (sol.at_mesh(j)[0] - exact(*s)).abs())
+        .fold(0.0, f64::max)
 }
 
-criterion_group!(benches, newton_step_13, bratu_continuation, versus_scipy);
+/// The SciPy comparison (benches/scipy_bvp.py) at matched accuracy: Bratu
+/// λ = 1 (lower branch) and Troesch μ = 5 on uniform meshes whose error is
+/// at or below SciPy's at tol = 1e-6 and 1e-8 (printed before timing).
+fn versus_scipy(c: &mut Criterion) {
+    let bratu = Bratu { analytic: true };
+    for n in [2usize, 4] {
+        let s = Collocation::new()
+            .intervals(n)
+            .solve(&bratu, |_s: f64| [0.0, 0.0], &[1.0])
+            .unwrap();
+        eprintln!(
+            "hockle bratu N={n}: max mesh error {:.2e}",
+            bratu_mesh_error(&s)
+        );
+    }
+    for n in [48usize, 100] {
+        let s = Collocation::new()
+            .intervals(n)
+            .solve(&Troesch, |s: f64| [s, 1.0], &[5.0])
+            .unwrap();
+        eprintln!(
+            "hockle troesch N={n}: |y'(0) error| {:.2e}; {}",
+            (s.at_mesh(0)[1] - 0.045_750_461_406_318_74).abs(),
+            s.newton()
+        );
+    }
+    for (name, n) in [
+        ("scipy_match_bratu_1e-6", 2usize),
+        ("scipy_match_bratu_1e-8", 4),
+    ] {
+        let solver = Collocation::new().intervals(n);
+        c.bench_function(name, |b| {
+            b.iter(|| {
+                solver
+                    .solve(&bratu, |_s: f64| [0.0, 0.0], black_box(&[1.0]))
+                    .unwrap()
+            })
+        });
+    }
+    for (name, n) in [
+        ("scipy_match_troesch_1e-6", 48usize),
+        ("scipy_match_troesch_1e-8", 100),
+    ] {
+        let solver = Collocation::new().intervals(n);
+        c.bench_function(name, |b| {
+            b.iter(|| {
+                solver
+                    .solve(&Troesch, |s: f64| [s, 1.0], black_box(&[5.0]))
+                    .unwrap()
+            })
+        });
+    }
+}
+
+/// Rod-sized continuation: the 13-dimensional system, N = 50, m = 4, 100
+/// steps in its forcing parameter with Δs capped at 0.05 (every step runs the
+/// chord corrector, a factorisation and a tangent).
+fn continuation_13(c: &mut Criterion) {
+    let problem = Coupled13::new();
+    let solver = Collocation::new().intervals(50);
+    let start = solver.solve(&problem, |_s: f64| [0.0; 13], &[0.0]).unwrap();
+    let cont = Continuation::new(0)
+        .solver(solver)
+        .step(0.05)
+        .step_bounds(1e-8, 0.05)
+        .max_steps(100);
+    let mut g = c.benchmark_group("continuation_13dim");
+    g.sample_size(10);
+    g.bench_function("n50_m4_100_steps", |b| {
+        b.iter(|| {
+            let br = cont.run(&problem, black_box(&start), ()).unwrap();
+            black_box(br.points().len())
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(
+    benches,
+    newton_step_13,
+    bratu_continuation,
+    versus_scipy,
+    continuation_13
+);
 criterion_main!(benches);

@@ -30,17 +30,34 @@ fn main() {
     let nikolai = |a_over_b| Stiffness::nikolai(a_over_b, 0.05).expect("valid stiffness");
     let springs = [
         ("paper: 89.8°, A/B = 10", Spring::paper()),
-        ("89°, A/B = 10", Spring::from_degrees(4, 89.0, nikolai(10.0)).unwrap()),
-        ("60°, A/B = 10", Spring::from_degrees(4, 60.0, nikolai(10.0)).unwrap()),
-        ("89.8°, A/B = 1", Spring::from_degrees(4, 89.8, nikolai(1.0)).unwrap()),
-        ("89.8°, A/B = 0.1 (slinky)", Spring::from_degrees(4, 89.8, nikolai(0.1)).unwrap()),
+        (
+            "89°, A/B = 10",
+            Spring::from_degrees(4, 89.0, nikolai(10.0)).unwrap(),
+        ),
+        (
+            "60°, A/B = 10",
+            Spring::from_degrees(4, 60.0, nikolai(10.0)).unwrap(),
+        ),
+        (
+            "89.8°, A/B = 1",
+            Spring::from_degrees(4, 89.8, nikolai(1.0)).unwrap(),
+        ),
+        (
+            "89.8°, A/B = 0.1 (slinky)",
+            Spring::from_degrees(4, 89.8, nikolai(0.1)).unwrap(),
+        ),
     ];
     let target = 3.0;
-    println!("| spring | model | time | pop-outs | first stretch: rms / max distance | whole curve: rms distance |");
+    println!(
+        "| spring | model | time | pop-outs | first stretch: rms / max distance | whole curve: rms distance |"
+    );
     println!("|---|---|---|---|---|---|");
     for (name, spring) in springs {
         let (rod, rod_time) = timed(&RodModel::default(), &spring, target);
-        let note = rod.stopped_early().map(|r| format!(" (stopped: {r})")).unwrap_or_default();
+        let note = rod
+            .stopped_early()
+            .map(|r| format!(" (stopped: {r})"))
+            .unwrap_or_default();
         println!(
             "| {name} | rod{note} | {:.0} ms | {} | reference | reference |",
             rod_time.as_secs_f64() * 1e3,

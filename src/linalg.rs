@@ -410,3 +410,39 @@ mod random_tests {
         }
     }
 }
+
+#[cfg(test)]
+mod timing {
+    use super::*;
+
+    #[test]
+    #[ignore = "timing probe: cargo test --release --lib timing -- --ignored --nocapture"]
+    fn lu_52() {
+        let (n, cols) = (52, 66);
+        let a0: Vec<f64> = (0..n * cols)
+            .map(|i| ((i * i) as f64 * 0.37 + 1.3).sin() + if i % (n + 1) == 0 { 5.0 } else { 0.0 })
+            .collect();
+        let mut piv = vec![0; n];
+        let mut perm_inv = vec![0; n];
+        let mut ws = DenseWorkspace::new(n, cols - n);
+        let reps = 2000;
+        let mut a = a0.clone();
+        let t = std::time::Instant::now();
+        for _ in 0..reps {
+            a.copy_from_slice(&a0);
+            lu_panel(&mut a, n, cols, n, &mut piv).unwrap();
+            let (lu, extra) = a.split_at_mut(n * n);
+            for col in extra.chunks_exact_mut(n) {
+                solve_upper(lu, n, n, col);
+            }
+        }
+        let t1 = t.elapsed().as_secs_f64() / reps as f64;
+        let t = std::time::Instant::now();
+        for _ in 0..reps {
+            a.copy_from_slice(&a0);
+            lu_solve_block(&mut a, n, cols, &mut piv, &mut perm_inv, &mut ws).unwrap();
+        }
+        let t2 = t.elapsed().as_secs_f64() / reps as f64;
+        eprintln!("own {:.1} µs, faer {:.1} µs", t1 * 1e6, t2 * 1e6);
+    }
+}

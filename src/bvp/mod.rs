@@ -4,6 +4,19 @@
 //! conditions g(y(0), y(1), p) = 0, integral conditions); [`Collocation`]
 //! says *how*; [`Solution`] is the result.
 //!
+//! ## Main types
+//!
+//! | type | role |
+//! |---|---|
+//! | [`Problem`] | the equations (dimension, right-hand side, boundary and integral conditions, optional Jacobians) |
+//! | [`Collocation`] | the solver settings (builder; every default listed in [`Collocation::new`]) and [`Collocation::solve`] |
+//! | [`InitialGuess`] | a closure s ↦ y(s) or a previous [`Solution`] |
+//! | [`Solution`] | mesh values, collocation polynomial ([`Solution::eval`], [`Solution::derivative`]), parameters, residual, error estimate, [`NewtonStats`] |
+//! | [`Mesh`] | interval boundaries on [0, 1] |
+//! | [`LinearSolver`] | condensed O(N) elimination (default) or faer's sparse LU reference |
+//!
+//! Continuation of solution families is in [`crate::continuation`].
+//!
 //! ## The method
 //!
 //! On a mesh 0 = t₀ < … < t_N = 1 the solution is approximated by a

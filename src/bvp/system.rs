@@ -31,6 +31,10 @@ use crate::linalg::{
     solve_upper, solve_upper_left,
 };
 
+/// Interval blocks up to this size (m·n) use the plain LU loops; larger
+/// ones faer's SIMD kernels (whose call overhead dominates tiny blocks).
+const SMALL_BLOCK: usize = 24;
+
 /// Unknowns (or a direction in their space). `p` always has the problem's
 /// full parameter length; only the free entries are unknowns.
 #[derive(Debug, Clone, PartialEq)]
@@ -168,6 +172,7 @@ pub(crate) struct System<'a, P: Problem + ?Sized> {
     vbuf: Vec<f64>,
     zbuf: Vec<f64>,
     factored: bool,
+    fallback: bool,
 }
 
 /// Central-difference step for a value of size |x|: ε^(1/3) max(1, |x|),
@@ -300,6 +305,7 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
             vbuf: vec![0.0; 2 * n + nz],
             zbuf: vec![0.0; nz],
             factored: false,
+            fallback: false,
         })
     }
 
@@ -569,6 +575,35 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
     /// determinant of the full system (fixed row/column order), up to a
     /// constant sign that depends only on the sizes.
     pub(crate) fn factor(&mut self, x: &State) -> Result<Det> {
+        // A singular interval block or elimination panel does not make the
+        // whole system singular: fall back to the sparse LU on the full
+        // system for this Jacobian (the determinant is then unknown: NaN).
+        self.fallback = false;
+        match self.factor_with(x, self.linear) {
+            Err(Error::SingularJacobian {
+                block: "interval block" | "mesh elimination",
+                ..
+            }) if self.linear == LinearSolver::Condensed => {
+                self.factor_with(x, LinearSolver::SparseLu)?;
+                self.fallback = true;
+                Ok(Det {
+                    sign: f64::NAN,
+                    log_abs: f64::NAN,
+                })
+            }
+            r => r,
+        }
+    }
+
+    fn active(&self) -> LinearSolver {
+        if self.fallback {
+            LinearSolver::SparseLu
+        } else {
+            self.linear
+        }
+    }
+
+    fn factor_with(&mut self, x: &State, linear: LinearSolver) -> Result<Det> {
         self.factored = false;
         let (n, m, nq, nn) = (self.n, self.m, self.nq, self.nn);
         let mn = m * n;
@@ -582,7 +617,7 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
         let y_ref = std::mem::take(&mut self.y_ref);
         let nint = self.nint;
         self.dint_p.fill(0.0);
-        let sparse = self.linear == LinearSolver::SparseLu;
+        let sparse = linear == LinearSolver::SparseLu;
         if sparse {
             self.triplets.clear();
         }
@@ -643,7 +678,17 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
             let wa = &mut self.wa[wbase..wbase + mn * wcols];
             let piv = &mut self.wpiv[j * mn..(j + 1) * mn];
             let pinv = &mut self.wpinv[..];
-            let d = match lu_solve_block(wa, mn, wcols, piv, pinv, &mut self.ws) {
+            let res = if mn <= SMALL_BLOCK {
+                lu_panel(wa, mn, wcols, mn, piv).inspect(|_| {
+                    let (lu, extra) = wa.split_at_mut(mn * mn);
+                    for col in extra.chunks_exact_mut(mn) {
+                        solve_upper(lu, mn, mn, col);
+                    }
+                })
+            } else {
+                lu_solve_block(wa, mn, wcols, piv, pinv, &mut self.ws)
+            };
+            let d = match res {
                 Ok(d) => d,
                 Err(b) => {
                     self.ycol = ycol;
@@ -702,7 +747,10 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
         }
         if sparse {
             self.factored = true;
-            return Ok(Det::ONE);
+            return Ok(Det {
+                sign: f64::NAN,
+                log_abs: f64::NAN,
+            });
         }
         self.wdet = wdet;
         self.phase_b()?;
@@ -836,9 +884,13 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
     /// Phase C: dense rows and the final (2n + n_q) system. Must be re-run
     /// after the border rows change (cheap: no problem evaluations).
     pub(crate) fn phase_c(&mut self) -> Result<Det> {
-        if self.linear == LinearSolver::SparseLu {
+        if self.active() == LinearSolver::SparseLu {
+            // The sparse LU gives no determinant.
             self.factored = true;
-            return Ok(Det::ONE);
+            return Ok(Det {
+                sign: f64::NAN,
+                log_abs: f64::NAN,
+            });
         }
         self.factored = false;
         let (n, m, nq, nn, nint, nbc) = (self.n, self.m, self.nq, self.nn, self.nint, self.nbc);
@@ -997,7 +1049,7 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
     /// the sparse reference.
     pub(crate) fn solve(&mut self, r: &Residual, out: &mut State) -> Result<()> {
         debug_assert!(self.factored);
-        if self.linear == LinearSolver::SparseLu {
+        if self.active() == LinearSolver::SparseLu {
             return self.solve_sparse(r, out);
         }
         let (n, m, nq, nn, nbc) = (self.n, self.m, self.nq, self.nn, self.nbc);
@@ -1018,7 +1070,13 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
                 *kv = -v;
             }
             let wa = &self.wa[j * mn * wcols..(j + 1) * mn * wcols];
-            lu_solve_vec(wa, mn, &self.wpiv[j * mn..(j + 1) * mn], kap, &mut self.tmp);
+            let piv = &self.wpiv[j * mn..(j + 1) * mn];
+            if mn <= SMALL_BLOCK {
+                apply_lower(wa, mn, mn, piv, kap);
+                solve_upper(wa, mn, mn, kap);
+            } else {
+                lu_solve_vec(wa, mn, piv, kap, &mut self.tmp);
+            }
             for i in 0..n {
                 let mut s = -r.cont[j * n + i];
                 for k in 0..m {
@@ -1345,5 +1403,149 @@ mod tests {
                 assert!((u - v).abs() < 1e-9 * (1.0 + v.abs()), "N={nn}: {u} vs {v}");
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod timing {
+    use super::*;
+
+    struct Troesch;
+    impl Problem for Troesch {
+        fn dim(&self) -> usize {
+            2
+        }
+        fn parameter_count(&self) -> usize {
+            1
+        }
+        fn boundary_count(&self) -> usize {
+            2
+        }
+        fn rhs(&self, _s: f64, y: &[f64], p: &[f64], f: &mut [f64]) {
+            f[0] = y[1];
+            f[1] = p[0] * (p[0] * y[0]).sinh();
+        }
+        fn boundary(&self, y0: &[f64], y1: &[f64], _p: &[f64], g: &mut [f64]) {
+            g[0] = y0[0];
+            g[1] = y1[0] - 1.0;
+        }
+    }
+
+    struct Big;
+    impl Problem for Big {
+        fn dim(&self) -> usize {
+            13
+        }
+        fn parameter_count(&self) -> usize {
+            1
+        }
+        fn boundary_count(&self) -> usize {
+            13
+        }
+        fn rhs(&self, _s: f64, y: &[f64], p: &[f64], f: &mut [f64]) {
+            for i in 0..13 {
+                f[i] = y[(i + 1) % 13] + 0.1 * y[i].sin() + p[0];
+            }
+        }
+        fn rhs_jacobian(
+            &self,
+            _s: f64,
+            y: &[f64],
+            _p: &[f64],
+            mut dfdy: nalgebra::DMatrixViewMut<'_, f64>,
+            mut dfdp: nalgebra::DMatrixViewMut<'_, f64>,
+        ) -> bool {
+            for i in 0..13 {
+                dfdy[(i, (i + 1) % 13)] += 1.0;
+                dfdy[(i, i)] += 0.1 * y[i].cos();
+                dfdp[(i, 0)] = 1.0;
+            }
+            true
+        }
+        fn boundary(&self, y0: &[f64], y1: &[f64], _p: &[f64], g: &mut [f64]) {
+            g[..7].copy_from_slice(&y0[..7]);
+            g[7..13].copy_from_slice(&y1[7..13]);
+        }
+    }
+
+    #[test]
+    #[ignore = "timing probe: cargo test --release --lib system::timing -- --ignored --nocapture"]
+    fn big_parts() {
+        let nn = 50;
+        let t: Vec<f64> = (0..=nn).map(|j| j as f64 / nn as f64).collect();
+        let mut sys = System::new(&Big, t, Tableau::new(4), vec![0], 1).unwrap();
+        let mut x = sys.zero_state();
+        for (i, v) in x.y.iter_mut().enumerate() {
+            *v = 0.01 * i as f64;
+        }
+        sys.border.coef_q[0] = 1.0;
+        let mut r = sys.zero_residual();
+        let mut d = sys.zero_state();
+        let reps = 200;
+        let t0 = std::time::Instant::now();
+        for _ in 0..reps {
+            sys.residual(&x, &mut r).unwrap();
+        }
+        let tr = t0.elapsed().as_secs_f64() / reps as f64;
+        let t0 = std::time::Instant::now();
+        for _ in 0..reps {
+            sys.factor(&x).unwrap();
+        }
+        let tf = t0.elapsed().as_secs_f64() / reps as f64;
+        let t0 = std::time::Instant::now();
+        for _ in 0..reps {
+            sys.phase_c().unwrap();
+        }
+        let tc = t0.elapsed().as_secs_f64() / reps as f64;
+        let t0 = std::time::Instant::now();
+        for _ in 0..reps {
+            sys.solve(&r, &mut d).unwrap();
+        }
+        let ts = t0.elapsed().as_secs_f64() / reps as f64;
+        eprintln!(
+            "13-dim N=50: residual {:.1} µs, factor {:.1} µs, phase C {:.1} µs, solve {:.1} µs",
+            tr * 1e6,
+            tf * 1e6,
+            tc * 1e6,
+            ts * 1e6
+        );
+    }
+
+    #[test]
+    #[ignore = "timing probe: cargo test --release --lib system::timing -- --ignored --nocapture"]
+    fn troesch_parts() {
+        let nn = 48;
+        let t: Vec<f64> = (0..=nn).map(|j| j as f64 / nn as f64).collect();
+        let mut sys = System::new(&Troesch, t, Tableau::new(4), vec![], 0).unwrap();
+        let mut x = sys.zero_state();
+        x.p[0] = 5.0;
+        for j in 0..=nn {
+            x.y[2 * j] = j as f64 / nn as f64;
+            x.y[2 * j + 1] = 1.0;
+        }
+        let mut r = sys.zero_residual();
+        let mut d = sys.zero_state();
+        let reps = 2000;
+        let t0 = std::time::Instant::now();
+        for _ in 0..reps {
+            sys.residual(&x, &mut r).unwrap();
+        }
+        let tr = t0.elapsed().as_secs_f64() / reps as f64;
+        let t0 = std::time::Instant::now();
+        for _ in 0..reps {
+            sys.factor(&x).unwrap();
+        }
+        let tf = t0.elapsed().as_secs_f64() / reps as f64;
+        let t0 = std::time::Instant::now();
+        for _ in 0..reps {
+            sys.solve(&r, &mut d).unwrap();
+        }
+        let ts = t0.elapsed().as_secs_f64() / reps as f64;
+        eprintln!(
+            "residual {:.1} µs, factor {:.1} µs, solve {:.1} µs",
+            tr * 1e6,
+            tf * 1e6,
+            ts * 1e6
+        );
     }
 }

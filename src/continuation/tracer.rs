@@ -356,6 +356,16 @@ impl fmt::Debug for Continuation {
     }
 }
 
+impl fmt::Display for Continuation {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "pseudo-arclength continuation in p[{}]: ds = {}, |ds| ∈ [{:e}, {}], {} steps max; {}",
+            self.parameter, self.ds, self.ds_min, self.ds_max, self.max_steps, self.solver
+        )
+    }
+}
+
 impl Continuation {
     /// Continuation in the parameter with index `parameter` (into p), with
     /// the defaults:
@@ -643,6 +653,13 @@ fn drive<P: Problem + ?Sized, O: Observer>(mut trace: Trace<'_, P>, mut observer
         if stopped || flow.is_break() {
             stopped = true;
             break;
+        }
+    }
+    if !stopped {
+        for ds in trace.rejections.drain(..) {
+            if observer.step_rejected(ds).is_break() {
+                break;
+            }
         }
     }
     let termination = if stopped {
@@ -1123,7 +1140,8 @@ impl<'a, P: Problem + ?Sized> Trace<'a, P> {
             if self.cont.folds && self.t0.p[q] * c.tangent.p[q] < 0.0 {
                 watches.push((Watch::Fold, self.t0.p[q], c.tangent.p[q]));
             }
-            if self.cont.branch_points && self.det0.sign != c.det.sign {
+            // (A NaN sign means the sparse fallback factorised: no test.)
+            if self.cont.branch_points && self.det0.sign * c.det.sign < 0.0 {
                 let f1 = c.det.sign * (c.det.log_abs - log_ref).exp();
                 watches.push((Watch::BranchPoint, self.det0.sign, f1));
             }
@@ -1161,8 +1179,10 @@ impl<'a, P: Problem + ?Sized> Trace<'a, P> {
                 }
             }
         }
-        // Location overwrites the factorisation at the new point.
-        self.factored_at_x0 = found.is_empty();
+        // Whatever factorisation is current (at the new point, a located
+        // point or an earlier chord point) preconditions the next corrector;
+        // Newton refreshes it when the contraction degrades.
+        self.factored_at_x0 = true;
         found.sort_by(|a, b| a.1.total_cmp(&b.1));
         let base = self.arclength;
         for (cs, s, kind, stop) in found {

@@ -22,6 +22,7 @@ use crate::error::{Error, Result};
 /// | [`energy`](Self::energy) | ½∫ A(u1 − u10)² + B(u2 − u20)² + C(u3 − u30)² ds |
 /// | [`planarity`](Self::planarity) | largest distance from the best plane through the force axis |
 /// | [`turning_number`](Self::turning_number), [`loops`](Self::loops) | the writhe-like loop count |
+/// | [`axial_turns`](Self::axial_turns) | turns of the tangent about the force axis (unwinding / overwinding) |
 /// | [`quaternion_drift`](Self::quaternion_drift) | max | \|q\| − 1 |, an accuracy check |
 #[derive(Debug, Clone)]
 pub struct Equilibrium {
@@ -239,6 +240,27 @@ impl Equilibrium {
     #[must_use]
     pub fn loops(&self) -> u32 {
         measure::turning(&self.samples()).loops
+    }
+
+    /// The number of turns of the tangent about the force axis: the net
+    /// azimuth of d3 around k over 2π (signed, positive in the sense of the
+    /// unstressed helix's winding for θ0 < 90°). n for the unstressed helix;
+    /// it falls when a spring unwinds and grows when it overwinds (the
+    /// paper's slinky, A/B = 0.1). Sampled at the mesh and Gauss points.
+    #[must_use]
+    pub fn axial_turns(&self) -> f64 {
+        let mut total = 0.0;
+        let mut prev: Option<f64> = None;
+        for (_, y) in self.samples() {
+            let d3 = super::quat::rot(&y[3..7]).column(2).into_owned();
+            let a = d3.y.atan2(d3.x);
+            if let Some(p) = prev {
+                let d = a - p;
+                total += d - 2.0 * PI * (d / (2.0 * PI)).round();
+            }
+            prev = Some(a);
+        }
+        total / (2.0 * PI)
     }
 
     /// (loops, planarity) from one set of samples (the pull records both).

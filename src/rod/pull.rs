@@ -1,5 +1,11 @@
-//! Pulling the spring: pseudo-arclength continuation in the force from the
-//! unstressed helix, with the pop-outs (folds in the force) located.
+//! Pulling the spring: pseudo-arclength continuation in the force (or the
+//! extension) from the unstressed helix, with the pop-outs (folds) located.
+//!
+//! This driver is written on [`Collocation::solve`] alone (the rod's
+//! phase condition needs the previous point as `y_ref`, and the arclength
+//! condition is one more integral condition), so it owns its secant
+//! predictor, step control and fold location; `crate::continuation` is the
+//! general tool (used by the tests for branch points at θ0 = 90°).
 //!
 //! ```text
 //!   unknowns  x = (y(·), λ),   λ = F_z
@@ -27,7 +33,7 @@ use nalgebra::DMatrixViewMut;
 
 use super::{Control, Equilibrium, Rod};
 use crate::bvp::{Collocation, Mesh, Problem, Solution};
-use crate::curve::{ForceExtension, ForcePoint};
+use crate::curve::{FoldKind, ForceExtension, ForcePoint};
 use crate::error::{Error, Result};
 
 /// One accepted point of a pull.
@@ -65,27 +71,6 @@ pub struct Stretch {
     pub planarity: f64,
 }
 
-/// Which way the force turns at a fold.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub enum FoldKind {
-    /// A local maximum of the force: a pop-out starts (under force control
-    /// the spring jumps here).
-    MaximumForce,
-    /// A local minimum of the force: the spring lands on a branch with one
-    /// loop fewer.
-    MinimumForce,
-}
-
-impl core::fmt::Display for FoldKind {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.write_str(match self {
-            FoldKind::MaximumForce => "maximum-force fold",
-            FoldKind::MinimumForce => "minimum-force fold",
-        })
-    }
-}
-
 /// A located fold (limit point in the force).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -116,7 +101,8 @@ impl core::fmt::Display for Fold {
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
 pub enum PullTermination {
-    /// The force reached the requested value.
+    /// The controlled load (force, or extension under extension control)
+    /// reached the requested value.
     ReachedForce,
     /// The step limit was reached.
     MaxSteps(usize),
@@ -134,7 +120,7 @@ pub enum PullTermination {
 impl core::fmt::Display for PullTermination {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match self {
-            PullTermination::ReachedForce => f.write_str("reached the requested force"),
+            PullTermination::ReachedForce => f.write_str("reached the requested load"),
             PullTermination::MaxSteps(n) => write!(f, "stopped after the maximum of {n} steps"),
             PullTermination::Stopped => f.write_str("stopped by the observer"),
             PullTermination::StepTooSmall { error } => {
@@ -249,13 +235,20 @@ impl PullRun {
         }
     }
 
-    /// The pop-outs: each maximum-force fold paired with the
-    /// minimum-force fold that follows it.
+    /// The pop-outs: each maximum fold of the controlled load paired with
+    /// the minimum fold that follows it (force folds under force control,
+    /// extension folds under extension control).
     #[must_use]
     pub fn pop_outs(&self) -> Vec<(Fold, Fold)> {
         self.folds
             .windows(2)
-            .filter(|w| w[0].kind == FoldKind::MaximumForce && w[1].kind == FoldKind::MinimumForce)
+            .filter(|w| {
+                matches!(
+                    (w[0].kind, w[1].kind),
+                    (FoldKind::MaxForce, FoldKind::MinForce)
+                        | (FoldKind::MaxExtension, FoldKind::MinExtension)
+                )
+            })
             .map(|w| (w[0], w[1]))
             .collect()
     }
@@ -314,11 +307,13 @@ pub struct Pull {
 }
 
 impl Pull {
-    /// A pull of `rod` (always under force control) with the defaults:
+    /// A pull of `rod` under force control (dead load; folds in the force
+    /// are where the spring jumps) with the defaults:
     ///
     /// | setting | default |
     /// |---|---|
     /// | [`to_force_scaled`](Self::to_force_scaled) | 3 (the paper's Fig. spring) |
+    /// | [`extension_control`](Self::extension_control) | off |
     /// | [`intervals`](Self::intervals) | 48 uniform mesh intervals (folds converged to 6e-7 against 128) |
     /// | [`points`](Self::points) | 4 Gauss points per interval |
     /// | [`step`](Self::step) | Δs = 2e-3 first, within [1e-7, 0.02] |
@@ -341,11 +336,22 @@ impl Pull {
         }
     }
 
-    /// Stop once F/(2πn)² exceeds `f` (also accepts a negative target for
-    /// compression).
+    /// Force control, stopping once F/(2πn)² exceeds `f` (a negative
+    /// target pushes instead).
     #[must_use]
     pub fn to_force_scaled(mut self, f: f64) -> Self {
+        self.rod = self.rod.with_control(Control::Force);
         self.target = f;
+        self
+    }
+
+    /// Extension control (hard device: Δz prescribed, F_z an unknown; folds
+    /// in Δz are where the spring jumps), stopping once Δz exceeds `dz`
+    /// (or falls below it, if it is below the rest extension cos θ0).
+    #[must_use]
+    pub fn extension_control(mut self, dz: f64) -> Self {
+        self.rod = self.rod.with_control(Control::Extension);
+        self.target = dz;
         self
     }
 
@@ -354,6 +360,12 @@ impl Pull {
     pub fn intervals(mut self, n: usize) -> Self {
         self.intervals = n;
         self
+    }
+
+    /// The number of mesh intervals this pull uses.
+    #[must_use]
+    pub fn mesh_intervals(&self) -> usize {
+        self.intervals
     }
 
     /// Gauss points per interval (2..=7).
@@ -429,8 +441,18 @@ impl Pull {
     /// Runs the pull, calling `observer` on every point and fold.
     ///
     /// Never fails: a run that cannot go on keeps its points and says why in
-    /// [`PullRun::termination`].
+    /// [`PullRun::termination`]. At θ0 = 90° exactly the unstressed ring has
+    /// both ends at the origin, so F_x, F_y are undetermined at rest and the
+    /// start is singular ([`PullTermination::StartFailed`]); trace the planar
+    /// case from a planar solution with [`crate::continuation`] instead (as
+    /// the `rod` tests do).
     pub fn run<O: PullObserver>(&self, mut observer: O) -> PullRun {
+        self.run_with(&mut observer)
+    }
+
+    /// [`Pull::run`] with a borrowed observer (to read what it collected
+    /// afterwards).
+    pub fn run_with<O: PullObserver>(&self, observer: &mut O) -> PullRun {
         let start = Instant::now();
         let mut run = PullRun {
             rod: self.rod,
@@ -443,7 +465,7 @@ impl Pull {
             intervals: self.intervals,
             elapsed: Duration::ZERO,
         };
-        run.termination = match self.trace(&mut run, &mut observer) {
+        run.termination = match self.trace(&mut run, observer) {
             Ok(t) => t,
             Err(e) => PullTermination::StartFailed(e),
         };
@@ -459,20 +481,37 @@ impl Pull {
         let solver = self.validate()?;
         let rod = self.rod;
         let scale = self.scale();
-        let sign = if self.target >= 0.0 { 1.0 } else { -1.0 };
         let p0 = rod.parameters_at_rest();
+        let (param, theta, sign) = match rod.control() {
+            Control::Force => (
+                Rod::FORCE,
+                1.0 / (scale * scale),
+                if self.target >= 0.0 { 1.0 } else { -1.0 },
+            ),
+            Control::Extension => (
+                Rod::EXTENSION,
+                1.0,
+                if self.target >= p0[Rod::EXTENSION] {
+                    1.0
+                } else {
+                    -1.0
+                },
+            ),
+        };
         let s0 = solver.solve(&rod, |s: f64| rod.unstressed(s), &p0)?;
-        // A second point a small force away gives the first secant.
+        // A second point a small load away gives the first secant.
         let mut p1 = p0;
-        p1[Rod::FORCE] = sign * 1e-4 * scale;
+        match rod.control() {
+            Control::Force => p1[Rod::FORCE] = sign * 1e-4 * scale,
+            Control::Extension => p1[Rod::EXTENSION] += sign * 1e-4,
+        }
         let s1 = solver.solve(&rod, &s0, &p1)?;
         run.newton_iterations += u64::from(s0.newton().iterations + s1.newton().iterations);
 
-        let arc_solver = solver.clone().free_parameters(&[Rod::FORCE]);
+        let arc_solver = solver.clone().free_parameters(&[param]);
         let weights = weights(scale);
-        let theta = 1.0 / (scale * scale);
-        let prev = Cached::new(s0, &weights, theta);
-        let mut cur = Cached::new(s1, &weights, theta);
+        let prev = Cached::new(s0, &weights, theta, param);
+        let mut cur = Cached::new(s1, &weights, theta, param);
         let mut arclength = prev.distance(&cur);
         for (c, a) in [(&prev, 0.0), (&cur, arclength)] {
             let eq = Equilibrium::new(rod, c.solution.clone())?;
@@ -492,7 +531,7 @@ impl Pull {
             let next = match attempt {
                 Ok(sol) => {
                     run.newton_iterations += u64::from(sol.newton().iterations);
-                    let next = Cached::new(sol, &weights, theta);
+                    let next = Cached::new(sol, &weights, theta, param);
                     let step = cur.distance(&next);
                     let t_new = Tangent::secant(&cur, &next, step);
                     if tangent.cos_angle(&t_new, &weights, theta) < self.max_angle.cos() {
@@ -526,10 +565,11 @@ impl Pull {
             arclength += step;
             // A fold: the force turned between the previous secant and this one.
             if tangent.dlambda * t_new.dlambda < 0.0 {
-                let kind = if tangent.dlambda * sign > 0.0 {
-                    FoldKind::MaximumForce
-                } else {
-                    FoldKind::MinimumForce
+                let kind = match (rod.control(), tangent.dlambda > 0.0) {
+                    (Control::Force, true) => FoldKind::MaxForce,
+                    (Control::Force, false) => FoldKind::MinForce,
+                    (Control::Extension, true) => FoldKind::MaxExtension,
+                    (Control::Extension, false) => FoldKind::MinExtension,
                 };
                 let located = if self.locate_folds {
                     self.locate(&rod, &arc_solver, &cur, &t_new, step, run)
@@ -557,7 +597,11 @@ impl Pull {
             if observer.point(&eq, &pt).is_break() {
                 return Ok(PullTermination::Stopped);
             }
-            if sign * pt.force_scaled >= sign * self.target {
+            let reached = match rod.control() {
+                Control::Force => pt.force_scaled,
+                Control::Extension => pt.extension,
+            };
+            if sign * reached >= sign * self.target {
                 return Ok(PullTermination::ReachedForce);
             }
             cur = next;
@@ -600,11 +644,11 @@ impl Pull {
             anchor: cur,
             tangent,
             sigma,
-            weights: weights(self.scale()),
-            theta: 1.0 / (self.scale() * self.scale()),
+            weights: cur.weights,
+            theta: cur.theta,
         };
         let mut p = *cur.parameters();
-        p[Rod::FORCE] += sigma * tangent.dlambda;
+        p[cur.param] += sigma * tangent.dlambda;
         let guess = |s: f64| {
             let mut y = [0.0; 13];
             cur.solution.eval_into(s, &mut y);
@@ -628,12 +672,11 @@ impl Pull {
         step: f64,
         run: &mut PullRun,
     ) -> Result<Solution> {
-        let mut samples: Vec<(f64, f64, Option<Solution>)> =
-            vec![(0.0, before.parameters()[0], None)];
+        let mut samples: Vec<(f64, f64, Option<Solution>)> = vec![(0.0, before.lambda(), None)];
         for sigma in [0.5 * step, step] {
             let sol = self.corrector(rod, solver, before, tangent, sigma)?;
             run.newton_iterations += u64::from(sol.newton().iterations);
-            samples.push((sigma, sol.parameters()[0], Some(sol)));
+            samples.push((sigma, sol.parameters()[before.param], Some(sol)));
         }
         for _ in 0..12 {
             let (a, b, c) = (&samples[0], &samples[1], &samples[2]);
@@ -650,7 +693,7 @@ impl Pull {
             }
             let sol = self.corrector(rod, solver, before, tangent, x)?;
             run.newton_iterations += u64::from(sol.newton().iterations);
-            let f = sol.parameters()[0];
+            let f = sol.parameters()[before.param];
             samples.push((x, f, Some(sol)));
             // Keep the three samples closest to the new abscissa.
             samples.sort_by(|p, q| (p.0 - x).abs().total_cmp(&(q.0 - x).abs()));
@@ -662,16 +705,12 @@ impl Pull {
             .into_iter()
             .filter_map(|s| s.2.map(|sol| (s.1, sol)))
             .max_by(|p, q| {
-                let sgn = if p.0 > before.parameters()[0] {
-                    1.0
-                } else {
-                    -1.0
-                };
+                let sgn = if p.0 > before.lambda() { 1.0 } else { -1.0 };
                 (sgn * p.0).total_cmp(&(sgn * q.0))
             });
         best.map(|b| b.1).ok_or(Error::InvalidArgument {
             name: "fold",
-            value: before.parameters()[0],
+            value: before.lambda(),
             allowed: "a fold bracketed by converged points",
         })
     }
@@ -698,10 +737,11 @@ struct Cached {
     quad: Vec<f64>,
     weights: [f64; 13],
     theta: f64,
+    param: usize,
 }
 
 impl Cached {
-    fn new(solution: Solution, weights: &[f64; 13], theta: f64) -> Self {
+    fn new(solution: Solution, weights: &[f64; 13], theta: f64, param: usize) -> Self {
         let nodes = solution.collocation_points();
         let cv = solution.collocation_values();
         let values = (0..nodes.len())
@@ -724,6 +764,7 @@ impl Cached {
             quad,
             weights: *weights,
             theta,
+            param,
         }
     }
 
@@ -732,6 +773,11 @@ impl Cached {
             .parameters()
             .try_into()
             .expect("rod solutions have 3 parameters")
+    }
+
+    /// The continuation parameter λ.
+    fn lambda(&self) -> f64 {
+        self.parameters()[self.param]
     }
 
     fn index(&self, s: f64) -> Option<usize> {
@@ -750,7 +796,7 @@ impl Cached {
             }
             t += self.quad[k] * v;
         }
-        let dl = self.parameters()[0] - other.parameters()[0];
+        let dl = self.lambda() - other.lambda();
         (t + theta * dl * dl).sqrt()
     }
 }
@@ -810,7 +856,7 @@ impl Tangent {
             nodes: a.nodes.clone(),
             values,
             quad: a.quad.clone(),
-            dlambda: (b.parameters()[0] - a.parameters()[0]) / step,
+            dlambda: (b.lambda() - a.lambda()) / step,
             from: a.solution.clone(),
             to: b.solution.clone(),
             step,
@@ -913,7 +959,7 @@ impl Problem for Arclength<'_> {
         for i in 0..13 {
             v += self.weights[i] * (y[i] - a[i]) * t[i];
         }
-        let dl = p[Rod::FORCE] - self.anchor.parameters()[0];
+        let dl = p[self.anchor.param] - self.anchor.lambda();
         h[1] = v + self.theta * dl * self.tangent.dlambda - self.sigma;
     }
     fn integrand_jacobian(
@@ -931,7 +977,7 @@ impl Problem for Arclength<'_> {
         for i in 0..13 {
             dhdy[(1, i)] = self.weights[i] * t[i];
         }
-        dhdp[(1, Rod::FORCE)] = self.theta * self.tangent.dlambda;
+        dhdp[(1, self.anchor.param)] = self.theta * self.tangent.dlambda;
         true
     }
 }

@@ -1,6 +1,6 @@
 //! [`RodModel`]: the full 3D pull by collocation continuation.
 
-use crate::curve::{Fold, FoldKind, ForceExtension, ForcePoint};
+use crate::curve::{Fold, ForceExtension, ForcePoint};
 use crate::error::{Error, Result};
 use crate::rod::{self, PullObserver, PullRun, PullTermination, Rod};
 
@@ -90,10 +90,7 @@ impl RodModel {
             .folds
             .iter()
             .map(|f| Fold {
-                kind: match f.kind {
-                    rod::FoldKind::MaximumForce => FoldKind::MaxForce,
-                    rod::FoldKind::MinimumForce => FoldKind::MinForce,
-                },
+                kind: f.kind,
                 index: f.after_point,
                 point: ForcePoint {
                     extension: f.extension,

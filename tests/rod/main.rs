@@ -4,6 +4,8 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod cascade;
+mod input;
 mod jacobians;
 mod planar;
 mod unstressed;

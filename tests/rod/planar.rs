@@ -8,6 +8,8 @@
 use core::f64::consts::PI;
 
 use hockle::bvp::Collocation;
+use hockle::continuation::{Continuation, PointKind};
+use hockle::elastica::Elastica;
 use hockle::rod::{Control, Equilibrium, Rod};
 
 /// Collocation with m = 4 on 100 uniform intervals: the error at mesh
@@ -109,5 +111,176 @@ fn planar_solutions_are_the_elastica_to_1e_8_in_force() {
         assert!(e.planarity() < 1e-12, "planarity {:e}", e.planarity());
         assert_eq!(e.loops(), 4);
         assert!(e.quaternion_drift() < 1e-12);
+    }
+}
+
+/// The υ-branch force of `hockle::elastica` at extension `dz` (secant on k;
+/// the extension is increasing in k on the primary υ-branch).
+fn elastica_force_at(dz: f64) -> f64 {
+    let ext = |k: f64| Elastica::symmetric(4, k).unwrap().upsilon.extension() - dz;
+    let (mut a, mut b) = (0.05, 1.0 - 1e-12);
+    let (mut fa, mut fb) = (ext(a), ext(b));
+    assert!(fa < 0.0 && fb > 0.0);
+    for _ in 0..200 {
+        // Illinois-free bisection/secant hybrid: safe and plenty fast here.
+        let c = if (b - a) > 1e-3 {
+            0.5 * (a + b)
+        } else {
+            b - fb * (b - a) / (fb - fa)
+        };
+        let fc = ext(c);
+        if fc.abs() < 1e-15 || (b - a).abs() < 1e-15 {
+            return Elastica::symmetric(4, c).unwrap().upsilon.force();
+        }
+        if fc < 0.0 {
+            (a, fa) = (c, fc);
+        } else {
+            (b, fb) = (c, fc);
+        }
+    }
+    Elastica::symmetric(4, 0.5 * (a + b))
+        .unwrap()
+        .upsilon
+        .force()
+}
+
+#[test]
+fn planar_branch_is_the_elastica_and_has_its_out_of_plane_branch_point() {
+    // Start on the planar primary υ-branch at F/(2πn)² = 0.1 (mpmath row),
+    // then continue in the force with hockle::continuation, detecting
+    // branch points (sign changes of the bordered Jacobian's determinant).
+    let scale = (8.0 * PI).powi(2);
+    let row = table().into_iter().nth(2).unwrap();
+    let rod = Rod::nikolai(4, PI / 2.0, 10.0, 0.05).unwrap();
+    // 128 intervals: the O(h⁸) error at the mesh points is 2e-8 relative
+    // with 64 intervals at F/(2πn)² ≈ 1.1 (tight hockles), 256× less here.
+    let solver = Collocation::new().intervals(128);
+    let start = solver
+        .solve(
+            &rod,
+            planar_guess(row.force, row.delta),
+            &[row.force, row.extension, PI / 2.0],
+        )
+        .unwrap();
+    let mut w = vec![1.0; 13];
+    w[7..10].fill(1.0 / (scale * scale));
+    w[10..13].fill(1e-3);
+    let branch = Continuation::new(Rod::FORCE)
+        .solver(solver)
+        .weights(&w)
+        .parameter_weight(1.0 / (scale * scale))
+        .step(0.01)
+        .step_bounds(1e-9, 0.05)
+        .max_steps(500)
+        .stop_at(1.2 * scale)
+        .run(&rod, &start, ())
+        .unwrap();
+    // Every point is planar and on hockle::elastica's υ-branch (two
+    // independent models: quaternion collocation vs Jacobi functions).
+    for p in branch.points().iter().step_by(6) {
+        let e = Equilibrium::new(rod, p.solution().clone()).unwrap();
+        assert!(e.planarity() < 1e-10);
+        let f = elastica_force_at(e.extension());
+        let err = ((e.force() - f) / f).abs();
+        assert!(
+            err < PLANAR_FORCE_REL,
+            "Δz = {}: rod {} vs elastica {f}: {err:e}",
+            e.extension(),
+            e.force()
+        );
+    }
+    // One out-of-plane branch point (the paper's diamond) on the primary
+    // branch below F/(2πn)² = 1.2, measured at F/(2πn)² = 0.70456; the
+    // imperfect spring (θ0 = 89.8°) pops out below it, at 0.6026.
+    let bps: Vec<_> = branch
+        .points()
+        .iter()
+        .filter(|p| p.kind() == PointKind::BranchPoint)
+        .collect();
+    assert_eq!(bps.len(), 1, "{:?}", branch.termination());
+    let e = Equilibrium::new(rod, bps[0].solution().clone()).unwrap();
+    assert!(e.planarity() < 1e-10);
+    assert!(
+        e.force_scaled() > 0.6026 && e.force_scaled() < 0.8,
+        "{}",
+        e.force_scaled()
+    );
+}
+
+/// The secondary planar branches at θ0 = 90°, reached from the n = 4 pull
+/// at θ0 = 89.8° (the most planar point of the j-loop stretch, re-solved at
+/// θ0 = 90°), traced in the force towards their fold: their branch points
+/// include the in-plane bifurcation with the non-symmetric ϑ_j branch, at
+/// the closed-form point of `hockle::elastica::bifurcation(4, j)`, and
+/// out-of-plane ones (the paper's diamonds).
+#[test]
+fn secondary_branches_branch_where_the_elastica_says() {
+    use hockle::bvp::Solution;
+    use hockle::rod::{Pull, PullPoint};
+    use std::ops::ControlFlow;
+
+    let scale = (8.0 * PI).powi(2);
+    let rod = Rod::nikolai(4, 89.8_f64.to_radians(), 10.0, 0.05).unwrap();
+    let mut best: Vec<Option<(f64, Solution)>> = vec![None; 5];
+    let _ =
+        Pull::new(rod)
+            .intervals(64)
+            .to_force_scaled(1.3)
+            .run(|e: &Equilibrium, p: &PullPoint| {
+                let l = p.loops as usize;
+                if (2..=3).contains(&l)
+                    && p.force_scaled > 0.1
+                    && best[l].as_ref().is_none_or(|b| p.planarity < b.0)
+                {
+                    best[l] = Some((p.planarity, e.solution().clone()));
+                }
+                ControlFlow::Continue(())
+            });
+    let rod90 = Rod::nikolai(4, PI / 2.0, 10.0, 0.05).unwrap();
+    let mut w = vec![1.0; 13];
+    w[7..10].fill(1.0 / (scale * scale));
+    w[10..13].fill(1e-3);
+    for j in [3_u32, 2] {
+        let (_, sol) = best[j as usize].as_ref().expect("a near-planar stretch");
+        let mut p = sol.parameters().to_vec();
+        p[Rod::THETA0] = PI / 2.0;
+        let start = Collocation::new().solve(&rod90, sol, &p).unwrap();
+        let e = Equilibrium::new(rod90, start.clone()).unwrap();
+        assert!(e.planarity() < 1e-12 && e.loops() == j);
+        let branch = Continuation::new(Rod::FORCE)
+            .weights(&w)
+            .parameter_weight(1.0 / (scale * scale))
+            .step(-0.01)
+            .step_bounds(1e-9, 0.05)
+            .max_steps(400)
+            .stop_at(0.05 * scale)
+            .stop_at(2.5 * scale)
+            .run(&rod90, &start, ())
+            .unwrap();
+        let bif = hockle::elastica::bifurcation(4, j).unwrap();
+        let bps: Vec<Equilibrium> = branch
+            .points()
+            .iter()
+            .filter(|p| p.kind() == PointKind::BranchPoint)
+            .map(|p| Equilibrium::new(rod90, p.solution().clone()).unwrap())
+            .collect();
+        // Located to 1e-10 in arclength on a 64-interval mesh (O(h⁸)):
+        // measured agreement with the closed form ~1e-9; 1e-6 is safe.
+        let in_plane = bps.iter().find(|e| {
+            ((e.force() - bif.force()) / bif.force()).abs() < 1e-6
+                && (e.extension() - bif.extension()).abs() < 1e-6
+        });
+        assert!(
+            in_plane.is_some(),
+            "j = {j}: no branch point at the elastica bifurcation (F = {}, Δz = {}); found {:?}",
+            bif.force(),
+            bif.extension(),
+            bps.iter()
+                .map(|e| (e.force(), e.extension()))
+                .collect::<Vec<_>>()
+        );
+        // Out-of-plane branch points too, and the branch stays planar.
+        assert!(bps.len() >= 2, "j = {j}: {} branch points", bps.len());
+        assert!(bps.iter().all(|e| e.planarity() < 1e-10));
     }
 }

@@ -1,0 +1,110 @@
+//! Traces the Bratu branch y'' + λ e^y = 0, y(0) = y(1) = 0 from λ = 0
+//! through its fold and up the upper branch until y(½) = 4, printing
+//! every special point and writing the branch as CSV.
+//!
+//! Run: `cargo run --release --example bratu [-- OUT.csv]`
+//! (default output `target/hockle/bratu.csv`).
+
+use std::io::Write;
+use std::ops::ControlFlow;
+
+use hockle::bvp::{Collocation, Problem};
+use hockle::continuation::{Continuation, Point, PointKind};
+use hockle::nalgebra::DMatrixViewMut;
+
+struct Bratu;
+
+impl Problem for Bratu {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn parameter_count(&self) -> usize {
+        1
+    }
+    fn boundary_count(&self) -> usize {
+        2
+    }
+    fn rhs(&self, _s: f64, y: &[f64], p: &[f64], f: &mut [f64]) {
+        f[0] = y[1];
+        f[1] = -p[0] * y[0].exp();
+    }
+    fn rhs_jacobian(
+        &self,
+        _s: f64,
+        y: &[f64],
+        p: &[f64],
+        mut dfdy: DMatrixViewMut<'_, f64>,
+        mut dfdp: DMatrixViewMut<'_, f64>,
+    ) -> bool {
+        dfdy[(0, 1)] = 1.0;
+        dfdy[(1, 0)] = -p[0] * y[0].exp();
+        dfdp[(1, 0)] = -y[0].exp();
+        true
+    }
+    fn boundary(&self, y0: &[f64], y1: &[f64], _p: &[f64], g: &mut [f64]) {
+        g[0] = y0[0];
+        g[1] = y1[0];
+    }
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let out = std::env::args()
+        .nth(1)
+        .unwrap_or_else(|| "target/hockle/bratu.csv".to_string());
+    if let Some(dir) = std::path::Path::new(&out).parent() {
+        std::fs::create_dir_all(dir)?;
+    }
+    let solver = Collocation::new().points(4).intervals(20);
+    let start = solver.solve(&Bratu, |_s: f64| [0.0, 0.0], &[0.0])?;
+    let t = std::time::Instant::now();
+    let mut passed_fold = false;
+    let branch = Continuation::new(0)
+        .solver(solver)
+        .step(0.1)
+        .max_steps(400)
+        // Stop on the upper branch where y(½) = 4 (λ ≈ 0.6).
+        .stop_when(|sol| sol.eval(0.5)[0] - 4.0)
+        .run(&Bratu, &start, |p: &Point| {
+            match p.kind() {
+                PointKind::Fold => {
+                    passed_fold = true;
+                    println!(
+                        "fold lambda={:.15} y'(0)={:.12} y(1/2)={:.12} s={:.6}",
+                        p.parameter(),
+                        p.solution().at_mesh(0)[1],
+                        p.solution().eval(0.5)[0],
+                        p.arclength()
+                    );
+                }
+                PointKind::BranchPoint => println!(
+                    "branch-point lambda={:.15} s={:.6}",
+                    p.parameter(),
+                    p.arclength()
+                ),
+                _ => {}
+            }
+            ControlFlow::Continue(())
+        })?;
+    let elapsed = t.elapsed();
+    let mut f = std::io::BufWriter::new(std::fs::File::create(&out)?);
+    writeln!(f, "arclength,lambda,dy0,y_half,kind,newton_iterations")?;
+    for p in branch.points() {
+        writeln!(
+            f,
+            "{},{},{},{},{},{}",
+            p.arclength(),
+            p.parameter(),
+            p.solution().at_mesh(0)[1],
+            p.solution().eval(0.5)[0],
+            p.kind(),
+            p.newton_iterations()
+        )?;
+    }
+    println!(
+        "{} points in {:.3} ms ({}); fold passed: {passed_fold}; CSV: {out}",
+        branch.points().len(),
+        elapsed.as_secs_f64() * 1e3,
+        branch.termination()
+    );
+    Ok(())
+}
