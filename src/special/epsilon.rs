@@ -90,7 +90,7 @@ pub fn jacobi_epsilon(u: f64, modulus: Modulus) -> f64 {
     if mc == 0.0 {
         return u.tanh();
     }
-    let Reduced { j, r, k } = reduce_2k(u, modulus);
+    let Reduced { j, r, k, .. } = reduce_2k(u, modulus);
     let e_complete = ellip_e(modulus);
     let e = epsilon_half_period(r.abs(), k, e_complete, m, mc).copysign(r);
     if j == 0.0 {
