@@ -6,7 +6,11 @@
 
 /// Relative error |x − r| / |r| (absolute when r = 0).
 pub fn rel_err(x: f64, r: f64) -> f64 {
-    if r == 0.0 { x.abs() } else { ((x - r) / r).abs() }
+    if r == 0.0 {
+        x.abs()
+    } else {
+        ((x - r) / r).abs()
+    }
 }
 
 /// Error of `x` against the reference `r` in units of ε·|r| (ulps of the
