@@ -256,7 +256,14 @@ const HYPERBOLIC_MC: f64 = 1.0 / (1u64 << 30) as f64;
 /// before, which the condition number (~v) absorbs only from a large start.
 /// For m₁ < 2⁻⁶⁰, v₀ ≥ 12.5 > K/2 and no doubling happens.
 fn sncndn_near_one(v: f64, mc: f64) -> (f64, f64, f64) {
-    let v0 = 0.5 * ((1.0 / (1u64 << 24) as f64) / mc).ln();
+    // v₀ from the binary exponent e of m₁ (m₁ < 2^(e+1)), which keeps
+    // m₁ e^{2v₀} ≤ 2⁻²⁴ without a logarithm; subnormal m₁ take the log.
+    let e = ((mc.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+    let v0 = if e > -1023 {
+        0.5 * core::f64::consts::LN_2 * f64::from(-25 - e)
+    } else {
+        0.5 * ((1.0 / (1u64 << 24) as f64) / mc).ln()
+    };
     let mut n = 0;
     let mut x = v;
     while x > v0 {
@@ -282,14 +289,19 @@ fn sncndn_near_one(v: f64, mc: f64) -> (f64, f64, f64) {
 /// dn = sech v + ¼ m₁ (sinh v cosh v + v) tanh v sech v
 /// ```
 fn sncndn_hyperbolic(v: f64, mc: f64) -> (f64, f64, f64) {
-    let t = v.tanh();
-    let ch = v.cosh();
-    let sech = 1.0 / ch;
-    let sc = v.sinh() * ch;
+    // One expm1 and one exp instead of tanh, cosh and sinh:
+    // t = e^{−2v} − 1, tanh v = −t/(2 + t), sech v = 2e^{−v}/(1 + e^{−2v}),
+    // sinh v cosh v = −t (2 + t)/(4 e^{−2v}); no cancellation for any v ≥ 0.
+    let t = (-2.0 * v).exp_m1();
+    let ex = (-v).exp();
+    let e2 = ex * ex;
+    let th = -t / (2.0 + t);
+    let sech = 2.0 * ex / (1.0 + e2);
+    let sc = -t * (2.0 + t) / (4.0 * e2);
     let q = 0.25 * mc;
-    let sn = t + q * (sc - v) * (sech * sech);
-    let cn = sech - q * (sc - v) * t * sech;
-    let dn = sech + q * (sc + v) * t * sech;
+    let sn = th + q * (sc - v) * (sech * sech);
+    let cn = sech - q * (sc - v) * th * sech;
+    let dn = sech + q * (sc + v) * th * sech;
     (sn, cn, dn)
 }
 
