@@ -81,8 +81,14 @@ pub(crate) fn ellip_k_dd(modulus: Modulus) -> (f64, f64) {
 #[must_use]
 #[inline]
 pub fn ellip_k(modulus: Modulus) -> f64 {
-    let (hi, lo) = ellip_k_dd(modulus);
-    hi + lo
+    let (m, mc) = (modulus.m(), modulus.complement());
+    if m < 0.95 {
+        let (p, t) = piece(&K_PIECES, m, mc);
+        p.eval(t)
+    } else {
+        let (hi, lo) = ellip_k_dd(modulus);
+        hi + lo
+    }
 }
 
 /// Complete elliptic integral of the second kind E(k).
@@ -118,8 +124,7 @@ pub fn ellip_e(modulus: Modulus) -> f64 {
     let (m, mc) = (modulus.m(), modulus.complement());
     if m < 0.95 {
         let (p, t) = piece(&E_PIECES, m, mc);
-        let (hi, lo) = p.eval_t(t);
-        hi + lo
+        p.eval(t)
     } else if mc == 0.0 {
         1.0
     } else {
