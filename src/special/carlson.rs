@@ -84,7 +84,7 @@ pub(crate) fn rf_rd_roots(x: f64, y: f64, z: f64, sx: f64, sy: f64, sz: f64) -> 
     let inv = scale / ad;
     let xx = (ad0 - x0) * inv;
     let yy = (ad0 - y0) * inv;
-    let zz = -(xx + yy) / 3.0;
+    let zz = (xx + yy) * (-1.0 / 3.0);
     let rd = scale * (1.0 + rd_terms(xx, yy, zz)) / (ad * ad.sqrt()) + 3.0 * sum;
     (rf, rd)
 }
@@ -122,6 +122,6 @@ pub(crate) fn rd(x: f64, y: f64, z: f64) -> f64 {
     }
     let xx = (a0 - x0) * scale / a;
     let yy = (a0 - y0) * scale / a;
-    let zz = -(xx + yy) / 3.0;
+    let zz = (xx + yy) * (-1.0 / 3.0);
     scale * (1.0 + rd_terms(xx, yy, zz)) / (a * a.sqrt()) + 3.0 * sum
 }

@@ -4,7 +4,7 @@ use super::Modulus;
 use super::coeffs::{E_PIECES, K_PIECES, PIECE_OF, PK, QK, RE, SE};
 use super::poly::Poly;
 
-/// The piece of [0, 0.9) holding m, and the offset t = m − centre. For
+/// The piece of [0, 0.95) holding m, and the offset t = m − centre. For
 /// m ≥ ½ the offset is formed from m₁ as (1 − centre) − m₁ (1 − centre is
 /// exact), so that a modulus given by its complement loses nothing.
 #[inline(always)]
@@ -47,15 +47,16 @@ pub(crate) fn ellip_k_dd(modulus: Modulus) -> (f64, f64) {
 ///
 /// ```text
 /// K(k) = ∫0^{π/2} dθ / √(1 − m sin²θ) = (π/2) ₂F₁(½, ½; 1; m)      DLMF 19.2.8, 19.5.1
-/// K(k) = PK(m₁) − ln(m₁) QK(m₁),  m ≥ 0.9                            DLMF 19.12.1
+/// K(k) = PK(m₁) − ln(m₁) QK(m₁),  m ≥ 0.95                           DLMF 19.12.1
 /// ```
 /// with m = k², m₁ = 1 − m read exactly from the [`Modulus`].
 ///
-/// Method: on 34 pieces of [0, 0.9) an exact Taylor polynomial (degree
-/// ≤ 14) about the piece's centre, with the constant term in double-double;
-/// for m ≥ 0.9 the logarithmic expansion in m₁ (DLMF 19.12.1), whose two
-/// power series are re-expanded about m₁ = 0.05. Coefficients:
-/// `tests/data/gen_special_coeffs.py` (mpmath). Every term is positive.
+/// Method: on 84 pieces of [0, 0.95) an exact Taylor polynomial (degree
+/// ≤ 10) about the piece's centre, with the constant term in double-double;
+/// for m ≥ 0.95 the logarithmic expansion in m₁ (DLMF 19.12.1), whose two
+/// power series are re-expanded about m₁ = 0.025. Coefficients:
+/// `tests/data/gen_special_coeffs.py` (mpmath). Every term of the m₁
+/// expansion is positive.
 ///
 /// # Special cases
 /// K(0) = π/2; K(1) = +∞ (m₁ = 0); K ~ ½ ln(16/m₁) as m₁ → 0, finite for
@@ -80,24 +81,30 @@ pub(crate) fn ellip_k_dd(modulus: Modulus) -> (f64, f64) {
 #[must_use]
 #[inline]
 pub fn ellip_k(modulus: Modulus) -> f64 {
-    let (hi, lo) = ellip_k_dd(modulus);
-    hi + lo
+    let (m, mc) = (modulus.m(), modulus.complement());
+    if m < 0.95 {
+        let (p, t) = piece(&K_PIECES, m, mc);
+        p.eval(t)
+    } else {
+        let (hi, lo) = ellip_k_dd(modulus);
+        hi + lo
+    }
 }
 
 /// Complete elliptic integral of the second kind E(k).
 ///
 /// ```text
 /// E(k) = ∫0^{π/2} √(1 − m sin²θ) dθ = (π/2) ₂F₁(−½, ½; 1; m)     DLMF 19.2.8, 19.5.2
-/// E(k) = 1 + m₁ (SE(m₁) − ln(m₁) RE(m₁)),  m ≥ 0.9                   DLMF 19.12.2
+/// E(k) = 1 + m₁ (SE(m₁) − ln(m₁) RE(m₁)),  m ≥ 0.95                  DLMF 19.12.2
 /// ```
 /// Method as for [`ellip_k`]: piecewise exact Taylor polynomials for
-/// m < 0.9, the logarithmic expansion in m₁ above (all terms positive).
+/// m < 0.95, the logarithmic expansion in m₁ above (all terms positive).
 ///
 /// # Special cases
 /// E(0) = π/2; E(1) = 1.
 ///
 /// # Accuracy
-/// Max 0.53 ulp, median 0.02, over 2012 moduli with m₁ down to 1e-300.
+/// Max 0.48 ulp, median 0.02, over 2012 moduli with m₁ down to 1e-300.
 /// See the [module docs](crate::special#accuracy) for the table.
 ///
 /// # Examples
@@ -117,8 +124,7 @@ pub fn ellip_e(modulus: Modulus) -> f64 {
     let (m, mc) = (modulus.m(), modulus.complement());
     if m < 0.95 {
         let (p, t) = piece(&E_PIECES, m, mc);
-        let (hi, lo) = p.eval_t(t);
-        hi + lo
+        p.eval(t)
     } else if mc == 0.0 {
         1.0
     } else {

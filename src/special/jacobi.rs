@@ -85,34 +85,69 @@ impl fmt::Display for Jacobi {
 
 /// u reduced modulo 2K: u = 2jK + r with |r| ≤ K (up to rounding).
 pub(crate) struct Reduced {
-    /// The period count j.
+    /// The period count j (for |u| ≥ 2⁵³·2K only approximate, like u).
     pub j: f64,
+    /// Whether j is odd (sn and cn change sign with every 2K).
+    pub odd: bool,
     /// The remainder r.
     pub r: f64,
     /// K itself.
     pub k: f64,
 }
 
+/// Whether the integer-valued double j is odd (doubles of magnitude ≥ 2⁵³
+/// are even).
+fn is_odd(j: f64) -> bool {
+    j.abs() < 9_007_199_254_740_992.0 && (j as i64) & 1 == 1
+}
+
 pub(crate) fn reduce_2k(u: f64, modulus: Modulus) -> Reduced {
     let (k_hi, k_lo) = ellip_k_dd(modulus);
     let k = k_hi + k_lo;
-    let j = round_ties_even(u / (2.0 * k));
+    let mut j = round_ties_even(u / (2.0 * k));
     if j == 0.0 {
-        return Reduced { j, r: u, k };
+        return Reduced {
+            j,
+            odd: false,
+            r: u,
+            k,
+        };
     }
-    // r = u − j·2K with 2K = 2k_hi + 2k_lo a double-double: split 2k_hi
-    // into 27 + 26 bits (Dekker) so that j·hi and j·lo are exact for
-    // |j| < 2²⁶; u − j·hi is then exact (Sterbenz).
     let two_k = 2.0 * k_hi;
-    let r = if j.abs() < 67_108_864.0 {
+    if j.abs() < 67_108_864.0 {
+        // r = u − j·2K with 2K = 2k_hi + 2k_lo a double-double: split
+        // 2k_hi into 27 + 26 bits (Dekker) so that j·hi and j·lo are exact
+        // for |j| < 2²⁶; u − j·hi is then exact (Sterbenz).
         let c = 134_217_729.0 * two_k;
         let hi = c - (c - two_k);
         let lo = two_k - hi;
-        ((u - j * hi) - j * lo) - j * (2.0 * k_lo)
-    } else {
-        (-j).mul_add(two_k, u) - j * (2.0 * k_lo)
-    };
-    Reduced { j, r, k }
+        let r = ((u - j * hi) - j * lo) - j * (2.0 * k_lo);
+        return Reduced {
+            j,
+            odd: is_odd(j),
+            r,
+            k,
+        };
+    }
+    // |u| ≥ 2²⁶·2K: u/2K itself is rounded, so the first remainder can
+    // still span many periods; reduce again until |r| ≤ K. (Beyond 2⁵³·2K
+    // the spacing of doubles exceeds the period and the result, though
+    // finite and in range, carries no information about u.)
+    let mut r = (-j).mul_add(two_k, u) - j * (2.0 * k_lo);
+    let mut odd = is_odd(j);
+    for _ in 0..64 {
+        if r.abs() <= k {
+            break;
+        }
+        let j2 = round_ties_even(r / (2.0 * k));
+        r = (-j2).mul_add(two_k, r) - j2 * (2.0 * k_lo);
+        odd ^= is_odd(j2);
+        j += j2;
+    }
+    if r.abs() > k {
+        r = 0.0;
+    }
+    Reduced { j, odd, r, k }
 }
 
 /// Below this |u| the Maclaurin series (to u¹¹ for sn, u¹⁰ for cn, dn) is
@@ -221,7 +256,14 @@ const HYPERBOLIC_MC: f64 = 1.0 / (1u64 << 30) as f64;
 /// before, which the condition number (~v) absorbs only from a large start.
 /// For m₁ < 2⁻⁶⁰, v₀ ≥ 12.5 > K/2 and no doubling happens.
 fn sncndn_near_one(v: f64, mc: f64) -> (f64, f64, f64) {
-    let v0 = 0.5 * ((1.0 / (1u64 << 24) as f64) / mc).ln();
+    // v₀ from the binary exponent e of m₁ (m₁ < 2^(e+1)), which keeps
+    // m₁ e^{2v₀} ≤ 2⁻²⁴ without a logarithm; subnormal m₁ take the log.
+    let e = ((mc.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+    let v0 = if e > -1023 {
+        0.5 * core::f64::consts::LN_2 * f64::from(-25 - e)
+    } else {
+        0.5 * ((1.0 / (1u64 << 24) as f64) / mc).ln()
+    };
     let mut n = 0;
     let mut x = v;
     while x > v0 {
@@ -247,14 +289,19 @@ fn sncndn_near_one(v: f64, mc: f64) -> (f64, f64, f64) {
 /// dn = sech v + ¼ m₁ (sinh v cosh v + v) tanh v sech v
 /// ```
 fn sncndn_hyperbolic(v: f64, mc: f64) -> (f64, f64, f64) {
-    let t = v.tanh();
-    let ch = v.cosh();
-    let sech = 1.0 / ch;
-    let sc = v.sinh() * ch;
+    // One expm1 and one exp instead of tanh, cosh and sinh:
+    // t = e^{−2v} − 1, tanh v = −t/(2 + t), sech v = 2e^{−v}/(1 + e^{−2v}),
+    // sinh v cosh v = −t (2 + t)/(4 e^{−2v}); no cancellation for any v ≥ 0.
+    let t = (-2.0 * v).exp_m1();
+    let ex = (-v).exp();
+    let e2 = ex * ex;
+    let th = -t / (2.0 + t);
+    let sech = 2.0 * ex / (1.0 + e2);
+    let sc = -t * (2.0 + t) / (4.0 * e2);
     let q = 0.25 * mc;
-    let sn = t + q * (sc - v) * (sech * sech);
-    let cn = sech - q * (sc - v) * t * sech;
-    let dn = sech + q * (sc + v) * t * sech;
+    let sn = th + q * (sc - v) * (sech * sech);
+    let cn = sech - q * (sc - v) * th * sech;
+    let dn = sech + q * (sc + v) * th * sech;
     (sn, cn, dn)
 }
 
@@ -340,12 +387,10 @@ pub fn jacobi(u: f64, modulus: Modulus) -> Jacobi {
             am: u.sinh().atan(),
         };
     }
-    let Reduced { j, r, k } = reduce_2k(u, modulus);
+    let Reduced { j, odd, r, k } = reduce_2k(u, modulus);
     let (sn, cn, dn) = sncndn_half_period(r.abs(), k, m, mc);
     let am_r = sn.atan2(cn).copysign(r);
     let sn = sn.copysign(r);
-    // Doubles of magnitude ≥ 2⁵³ are even integers.
-    let odd = j.abs() < 9_007_199_254_740_992.0 && (j as i64) & 1 == 1;
     let (sn, cn) = if odd { (-sn, -cn) } else { (sn, cn) };
     let am = if j == 0.0 {
         am_r

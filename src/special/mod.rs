@@ -18,14 +18,15 @@
 //! K′ = K(k′) is `ellip_k(modulus.complementary())`.
 //!
 //! # Methods, and why
-//! - **K, E**: exact Taylor polynomials (degree ≤ 13) about the centres of
-//!   34 pieces of [0, 0.9), with the constant term in double-double, and
-//!   for m ≥ 0.9 the logarithmic expansion K = PK(m₁) − ln m₁ · QK(m₁),
+//! - **K, E**: exact Taylor polynomials (degree ≤ 10) about the centres of
+//!   84 pieces of [0, 0.95) (widths 1/40 down to 1/320 as m nears 1), with
+//!   the constant term in double-double, and for m ≥ 0.95 the logarithmic
+//!   expansion K = PK(m₁) − ln m₁ · QK(m₁),
 //!   E = 1 + m₁ (SE(m₁) − ln m₁ · RE(m₁)) (DLMF 19.12.1–2), every term
 //!   positive. Coefficients come from the Gauss series by exact
 //!   differentiation (`tests/data/gen_special_coeffs.py`, mpmath). This is
 //!   Fukushima's (2009) scheme; it beats Carlson's R_F(0, m₁, 1) (measured
-//!   2.2 ulp, ~45 ns) on both accuracy (≤ 0.9 ulp) and speed, and for m ≥ ½ the
+//!   2.2 ulp, ~45 ns) on both accuracy (≤ 0.9 ulp) and speed (~7 ns), and for m ≥ ½ the
 //!   offset is formed from m₁, so a modulus given by its complement is exact.
 //! - **F, E(φ)**: φ = jπ + r (π in three Cody–Waite parts), then Carlson's
 //!   R_F, R_D (DLMF 19.25.5, 19.25.9) with 1 − m sin²r formed as
@@ -66,14 +67,14 @@
 //! | function | median | p99 | max | median (norm.) | p99 (norm.) | max (norm.) |
 //! |---|---|---|---|---|---|---|
 //! | K | 0.18 | 0.64 | 0.88 | – | – | – |
-//! | E | 0.02 | 0.35 | 0.53 | – | – | – |
-//! | F(φ) | 0.31 | 1.26 | 1.83 | 0.17 | 0.75 | 1.18 |
-//! | E(φ) | 0.22 | 1.32 | 1.85 | 0.11 | 0.66 | 1.35 |
-//! | sn | 0.19 | 568 | 1.2e17 | 0.04 | 0.63 | 1.18 |
-//! | cn | 0.33 | 2.3e15 | 1.0e17 | 0.09 | 0.68 | 2.38 |
-//! | dn | 0.18 | 1563 | 4753 | 0.11 | 0.65 | 1.73 |
-//! | am | 0.20 | 1.91 | 23 | 0.15 | 0.69 | 1.25 |
-//! | ε | 0.13 | 1.17 | 37 | 0.08 | 0.51 | 1.04 |
+//! | E | 0.02 | 0.35 | 0.48 | – | – | – |
+//! | F(φ) | 0.31 | 1.26 | 1.83 | 0.17 | 0.79 | 1.18 |
+//! | E(φ) | 0.21 | 1.32 | 2.76 | 0.11 | 0.66 | 1.38 |
+//! | sn | 0.22 | 568 | 1.2e17 | 0.05 | 0.80 | 1.18 |
+//! | cn | 0.28 | 2.3e15 | 1.0e17 | 0.09 | 0.64 | 2.38 |
+//! | dn | 0.17 | 1562 | 4746 | 0.10 | 0.60 | 1.73 |
+//! | am | 0.19 | 1.91 | 23 | 0.14 | 0.69 | 1.25 |
+//! | ε | 0.15 | 1.17 | 37 | 0.08 | 0.75 | 1.08 |
 //!
 //! The huge raw errors are at zeros of sn and cn for large u (u = 2jK
 //! rounded to a double is not a zero) and are what the condition number

@@ -35,4 +35,10 @@ impl<const N: usize> Poly<N> {
         let lo = q - (hi - a[0]);
         (hi, lo)
     }
+
+    /// p at the offset t, rounded once at the end: `eval_t(t).0`.
+    #[inline(always)]
+    pub fn eval(&self, t: f64) -> f64 {
+        self.eval_t(t).0
+    }
 }

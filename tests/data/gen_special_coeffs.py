@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Polynomial coefficients for K(m) and E(m), written to src/special/coeffs.rs.
 
-Run from the repository root:  python3 tests/data/gen_special_coeffs.py
-(mpmath, 60 digits; deterministic).  Every coefficient is an exact Taylor
+Run from the repository root:  python3 tests/data/gen_special_coeffs.py && cargo fmt
+(mpmath, 60 digits; deterministic; cargo fmt re-wraps the long arrays).  Every coefficient is an exact Taylor
 coefficient, not a fit:
 
 * 0 <= m < 0.95: Taylor polynomials in t = m - c about the centre c of each

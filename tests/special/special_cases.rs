@@ -173,3 +173,43 @@ fn zeta_and_helpers() {
     assert_eq!(j.dc(), j.dn / j.cn);
     assert!(j.to_string().starts_with("sn = "));
 }
+
+/// Finite u of any size and m₁ down to the smallest subnormal give finite
+/// values in range (no NaN): for |u| beyond ~2⁵³·2K the result carries no
+/// information about u, but it stays a valid point of the functions.
+#[test]
+fn huge_arguments_and_extreme_moduli_stay_finite() {
+    let mcs = [
+        5e-324, 1e-310, 1e-300, 1e-200, 1e-20, 9.3e-10, 1e-3, 0.5, 1.0,
+    ];
+    let us = [
+        0.0,
+        -0.0,
+        1e-310,
+        1e-20,
+        0.3,
+        10.0,
+        1e4,
+        1e6,
+        1e15,
+        1e20,
+        1e300,
+        -1e300,
+        f64::MAX,
+    ];
+    for mc in mcs {
+        let md = Modulus::from_complement(mc).unwrap();
+        for u in us {
+            let j = jacobi(u, md);
+            assert!(j.sn.abs() <= 1.0 && j.cn.abs() <= 1.0, "{md}, u = {u}: {j}");
+            assert!(
+                (0.0..=1.0).contains(&j.dn) && j.am.is_finite(),
+                "{md}, u = {u}: {j}"
+            );
+            assert!(jacobi_epsilon(u, md).is_finite(), "{md}, u = {u}");
+            assert!(jacobi_zeta(u, md).is_finite(), "{md}, u = {u}");
+            assert!(ellip_e_inc(u, md).is_finite(), "{md}, φ = {u}");
+            assert!(!ellip_f(u, md).is_nan(), "{md}, φ = {u}");
+        }
+    }
+}
