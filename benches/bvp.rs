@@ -143,6 +143,13 @@ fn continuation_13(c: &mut Criterion) {
             black_box(br.points().len())
         })
     });
+    let fast = cont.clone().detect_branch_points(false);
+    g.bench_function("n50_m4_100_steps_no_branch_points", |b| {
+        b.iter(|| {
+            let br = fast.run(&problem, black_box(&start), ()).unwrap();
+            black_box(br.points().len())
+        })
+    });
     g.finish();
 }
 

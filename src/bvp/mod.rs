@@ -61,4 +61,4 @@ pub use solution::{NewtonStats, Solution};
 pub use solver::{Collocation, InitialGuess};
 pub use system::LinearSolver;
 
-pub(crate) use solver::{NewtonOptions, finish, newton};
+pub(crate) use solver::{NewtonOptions, finish, newton, scaled_norm};

@@ -448,3 +448,48 @@ fn angle_check_rejects_steps_and_reports() {
     // 0.1 → 0.05 → … → 1e-3 is seven halvings (the last clamps to ds_min).
     assert!(rejected >= 7, "{rejected} rejections");
 }
+
+#[test]
+fn without_branch_points_the_fold_is_the_same_with_fewer_factorisations() {
+    // With branch-point detection off, steps whose chord corrector converged
+    // fast keep the old factorisation and refine the tangent on it.
+    let p = Bratu { analytic: true };
+    let solver = Collocation::new().intervals(20);
+    let start = solver.solve(&p, |_s: f64| [0.0, 0.0], &[0.0]).unwrap();
+    let cont = Continuation::new(0)
+        .solver(solver)
+        .step(0.1)
+        .stop_when(|s| s.at_mesh(0)[1] - 10.846_899_019_389_452);
+    let full = cont.run(&p, &start, ()).unwrap();
+    let fast = cont
+        .clone()
+        .detect_branch_points(false)
+        .run(&p, &start, ())
+        .unwrap();
+    let f = fast.folds().next().expect("fold");
+    // Same discretisation and location tolerance as bratu_fold_is_located.
+    assert!(
+        (f.parameter() - BRATU_FOLD).abs() < 1e-9,
+        "{:e}",
+        f.parameter() - BRATU_FOLD
+    );
+    assert!((f.solution().at_mesh(0)[1] - 4.0).abs() < 1e-8);
+    assert_eq!(fast.termination(), &Termination::Event(0));
+    assert!((fast.last().unwrap().parameter() - 1.0).abs() < 1e-8);
+    // Step control is not penalised much (measured counts are printed).
+    eprintln!(
+        "points: full {}, without branch points {}",
+        full.points().len(),
+        fast.points().len()
+    );
+    assert!(fast.points().len() <= full.points().len() * 3 / 2);
+    // The first step is identical (same ds): its tangent agrees with the
+    // factorised one to the refinement tolerance.
+    let (a, b) = (&full.points()[1], &fast.points()[1]);
+    assert!((a.parameter() - b.parameter()).abs() < 1e-12);
+    assert!(
+        (a.dparameter_ds() - b.dparameter_ds()).abs() < 1e-8,
+        "{:e}",
+        a.dparameter_ds() - b.dparameter_ds()
+    );
+}
