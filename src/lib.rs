@@ -20,6 +20,31 @@
 //! | [`spring`] | the scene: one spring, answered by every model with a [`ForceExtension`] |
 //! | [`curve`] | [`ForceExtension`], the one output type of every model |
 //!
+//! ## Main types
+//!
+//! | type | what it is |
+//! |---|---|
+//! | [`spring::Spring`] | a spring: coils, helix angle, stiffnesses |
+//! | [`spring::HelixModel`], [`spring::ElasticaModel`], [`spring::RodModel`] | three models of it, cheapest first; each answers [`spring::Model::pull`] |
+//! | [`spring::Response`] | a model's answer: the curve, folds, pop-outs, stretches, jumps |
+//! | [`ForceExtension`] | a force–extension curve, the one output type of every model |
+//! | [`elastica::Elastica`] | one planar equilibrium; [`elastica::Trace`] a whole branch |
+//! | [`helix::Helix`], [`helix::Stiffness`] | the exact-helix response |
+//! | [`rod::Rod`], [`rod::Pull`] | the 3D rod as a boundary-value problem, and its pull driver |
+//! | [`bvp::Problem`], [`bvp::Collocation`] | any two-point BVP, and the collocation solver |
+//! | [`continuation::Continuation`] | pseudo-arclength continuation of a [`bvp::Problem`] |
+//! | [`special::Modulus`], [`special::jacobi`] | elliptic modulus and Jacobi functions |
+//!
+//! ```
+//! use hockle::spring::{HelixModel, Model, Spring};
+//!
+//! let spring = Spring::paper(); // n = 4, θ0 = 89.8°, A/B = 10, ν = 0.05
+//! let response = HelixModel::default().pull(&spring, 0.5)?;
+//! let last = response.curve().points().last().unwrap();
+//! assert!((last.force / spring.force_scale() - 0.5).abs() < 1e-9);
+//! # Ok::<(), hockle::Error>(())
+//! ```
+//!
 //! ## Conventions
 //!
 //! - **Units.** Rod length 1 and bending stiffness B = 1 unless given: forces
@@ -61,4 +86,9 @@ pub mod spring;
 pub(crate) mod linalg;
 
 pub use curve::{Fold, FoldKind, ForceExtension, ForcePoint};
+
+/// The README's code, compiled and run as a doctest.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;
 pub use error::{Error, Result};

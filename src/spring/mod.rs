@@ -1,5 +1,5 @@
 //! The scene: one [`Spring`], answered by every model with a [`Response`] whose
-//! curve is a [`ForceExtension`].
+//! curve is a [`ForceExtension`](crate::ForceExtension).
 //!
 //! A user describes the spring once and picks the cheapest model the
 //! question needs:
