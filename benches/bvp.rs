@@ -8,10 +8,7 @@ use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use hockle::bvp::Collocation;
 use hockle::continuation::Continuation;
 
-#[path = "../tests/bvp/problems.rs"]
-#[allow(dead_code)]
-mod problems;
-use problems::{Bratu, Coupled13, Troesch};
+use hockle::bvp::classic::{self as problems, Bratu, Coupled13, Troesch};
 
 /// One damped Newton step of the 13-dimensional system (Jacobian at every
 /// collocation point, condensation, elimination, two solves, two residual

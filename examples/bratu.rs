@@ -8,44 +8,9 @@
 use std::io::Write;
 use std::ops::ControlFlow;
 
-use hockle::bvp::{Collocation, Problem};
+use hockle::bvp::Collocation;
+use hockle::bvp::classic::Bratu;
 use hockle::continuation::{Continuation, Point, PointKind};
-use hockle::nalgebra::DMatrixViewMut;
-
-struct Bratu;
-
-impl Problem for Bratu {
-    fn dim(&self) -> usize {
-        2
-    }
-    fn parameter_count(&self) -> usize {
-        1
-    }
-    fn boundary_count(&self) -> usize {
-        2
-    }
-    fn rhs(&self, _s: f64, y: &[f64], p: &[f64], f: &mut [f64]) {
-        f[0] = y[1];
-        f[1] = -p[0] * y[0].exp();
-    }
-    fn rhs_jacobian(
-        &self,
-        _s: f64,
-        y: &[f64],
-        p: &[f64],
-        mut dfdy: DMatrixViewMut<'_, f64>,
-        mut dfdp: DMatrixViewMut<'_, f64>,
-    ) -> bool {
-        dfdy[(0, 1)] = 1.0;
-        dfdy[(1, 0)] = -p[0] * y[0].exp();
-        dfdp[(1, 0)] = -y[0].exp();
-        true
-    }
-    fn boundary(&self, y0: &[f64], y1: &[f64], _p: &[f64], g: &mut [f64]) {
-        g[0] = y0[0];
-        g[1] = y1[0];
-    }
-}
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let out = std::env::args()
@@ -55,7 +20,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         std::fs::create_dir_all(dir)?;
     }
     let solver = Collocation::new().points(4).intervals(20);
-    let start = solver.solve(&Bratu, |_s: f64| [0.0, 0.0], &[0.0])?;
+    let start = solver.solve(&Bratu::default(), |_s: f64| [0.0, 0.0], &[0.0])?;
     let t = std::time::Instant::now();
     let mut passed_fold = false;
     let branch = Continuation::new(0)
@@ -64,7 +29,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .max_steps(400)
         // Stop on the upper branch where y(½) = 4 (λ ≈ 0.6).
         .stop_when(|sol| sol.eval(0.5)[0] - 4.0)
-        .run(&Bratu, &start, |p: &Point| {
+        .run(&Bratu::default(), &start, |p: &Point| {
             match p.kind() {
                 PointKind::Fold => {
                     passed_fold = true;

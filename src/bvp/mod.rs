@@ -15,7 +15,8 @@
 //! | [`Mesh`] | interval boundaries on [0, 1] |
 //! | [`LinearSolver`] | condensed O(N) elimination (default) or faer's sparse LU reference |
 //!
-//! Continuation of solution families is in [`crate::continuation`].
+//! Continuation of solution families is in [`crate::continuation`];
+//! classical problems with known answers are in [`classic`].
 //!
 //! ## The method
 //!
@@ -48,6 +49,7 @@
 
 #![allow(clippy::needless_range_loop)]
 
+pub mod classic;
 mod mesh;
 mod problem;
 mod solution;
