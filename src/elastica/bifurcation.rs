@@ -9,6 +9,7 @@ use crate::special::{Modulus, ellip_e, ellip_k};
 
 /// The bifurcation point of secondary branch j with ϑ_j for n coils.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Bifurcation {
     n: u32,
     j: u32,

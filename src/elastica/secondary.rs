@@ -9,6 +9,7 @@ use crate::special::{Modulus, ellip_k};
 /// The fold of a secondary branch: its smallest modulus, where its two arms
 /// meet.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Fold {
     solution: Elastica,
 }

@@ -116,6 +116,7 @@ impl core::fmt::Display for Branch {
 /// The curvature along the rod is κ(s) = 2Ω dn(u1 + Ωs, k), s ∈ [0, 1].
 /// All quantities are computed once; accessors are free.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Elastica {
     pub(crate) n: u32,
     pub(crate) modulus: Modulus,

@@ -10,6 +10,7 @@ use crate::special::{Modulus, ellip_e, ellip_k, jacobi};
 
 /// The two primary symmetric solutions at one modulus k (same k, different Ω).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Symmetric {
     /// The opened coil (υ): ends near curvature maxima.
     pub upsilon: Elastica,

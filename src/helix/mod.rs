@@ -64,11 +64,44 @@ use crate::error::{Error, Result};
 /// Validated once at construction (every value finite and positive); the
 /// helix formulas use only B and C (u1 = 0 means no bending about d1).
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(try_from = "StiffnessParts", into = "StiffnessParts")
+)]
 pub struct Stiffness {
     a: f64,
     b: f64,
     c: f64,
+}
+
+/// The serialized form of [`Stiffness`], validated by [`Stiffness::new`]
+/// on the way in.
+#[cfg(feature = "serde")]
+#[derive(serde::Serialize, serde::Deserialize)]
+struct StiffnessParts {
+    a: f64,
+    b: f64,
+    c: f64,
+}
+
+#[cfg(feature = "serde")]
+impl From<Stiffness> for StiffnessParts {
+    fn from(s: Stiffness) -> Self {
+        Self {
+            a: s.a,
+            b: s.b,
+            c: s.c,
+        }
+    }
+}
+
+#[cfg(feature = "serde")]
+impl TryFrom<StiffnessParts> for Stiffness {
+    type Error = Error;
+    fn try_from(p: StiffnessParts) -> Result<Self> {
+        Stiffness::new(p.a, p.b, p.c)
+    }
 }
 
 impl Stiffness {

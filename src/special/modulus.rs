@@ -38,10 +38,63 @@ use crate::error::{Error, Result};
 /// # Ok::<(), hockle::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(try_from = "ModulusParts", into = "ModulusParts")
+)]
 pub struct Modulus {
     k: f64,
     m: f64,
     mc: f64,
+}
+
+/// The serialized form of a [`Modulus`]: all three numbers, so that a round
+/// trip is exact (m₁ near 1e-300 cannot be recovered from m).
+#[cfg(feature = "serde")]
+#[derive(serde::Serialize, serde::Deserialize)]
+struct ModulusParts {
+    k: f64,
+    m: f64,
+    m1: f64,
+}
+
+#[cfg(feature = "serde")]
+impl From<Modulus> for ModulusParts {
+    fn from(md: Modulus) -> Self {
+        Self {
+            k: md.k,
+            m: md.m,
+            m1: md.mc,
+        }
+    }
+}
+
+#[cfg(feature = "serde")]
+impl TryFrom<ModulusParts> for Modulus {
+    type Error = Error;
+
+    /// Accepts the parts of a modulus that one of the constructors could
+    /// have made: each in [0, 1], m + m₁ = 1 and k² = m to a few roundings.
+    fn try_from(p: ModulusParts) -> Result<Self> {
+        for (name, value) in [("k", p.k), ("m", p.m), ("m1", p.m1)] {
+            if !(0.0..=1.0).contains(&value) {
+                return Err(Error::InvalidModulus { name, value });
+            }
+        }
+        let tol = 4.0 * f64::EPSILON;
+        if (p.m + p.m1 - 1.0).abs() > tol || (p.k * p.k - p.m).abs() > tol {
+            return Err(Error::InvalidModulus {
+                name: "m1",
+                value: p.m1,
+            });
+        }
+        Ok(Self {
+            k: p.k,
+            m: p.m,
+            mc: p.m1,
+        })
+    }
 }
 
 impl Modulus {

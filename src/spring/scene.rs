@@ -26,12 +26,48 @@ use crate::helix::Stiffness;
 /// assert!((s.stiffness().c() - 1.7316).abs() < 1e-4); // the paper's C/B
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(try_from = "SpringParts", into = "SpringParts")
+)]
 pub struct Spring {
     coils: u32,
     helix_angle: f64,
     stiffness: Stiffness,
     intrinsic: Vector3<f64>,
+}
+
+/// The serialized form of [`Spring`], validated by its constructors on
+/// the way in.
+#[cfg(feature = "serde")]
+#[derive(serde::Serialize, serde::Deserialize)]
+struct SpringParts {
+    coils: u32,
+    helix_angle: f64,
+    stiffness: Stiffness,
+    intrinsic_strains: [f64; 3],
+}
+
+#[cfg(feature = "serde")]
+impl From<Spring> for SpringParts {
+    fn from(s: Spring) -> Self {
+        Self {
+            coils: s.coils,
+            helix_angle: s.helix_angle,
+            stiffness: s.stiffness,
+            intrinsic_strains: s.intrinsic.into(),
+        }
+    }
+}
+
+#[cfg(feature = "serde")]
+impl TryFrom<SpringParts> for Spring {
+    type Error = Error;
+    fn try_from(p: SpringParts) -> Result<Self> {
+        Spring::new(p.coils, p.helix_angle, p.stiffness)?
+            .with_intrinsic_strains(Vector3::from(p.intrinsic_strains))
+    }
 }
 
 impl Spring {
