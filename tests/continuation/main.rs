@@ -450,6 +450,47 @@ fn angle_check_rejects_steps_and_reports() {
 }
 
 #[test]
+fn the_iterator_counts_steps_rejections_and_iterations() {
+    // Driving the Trace by hand gives the same counts as the observer of
+    // `run`: accepted steps = regular points, rejections = step_rejected
+    // calls, and at least the corrector iterations of the accepted points.
+    struct Count<'a>(&'a mut usize);
+    impl hockle::continuation::Observer for Count<'_> {
+        fn step_rejected(&mut self, _new_ds: f64) -> ControlFlow<()> {
+            *self.0 += 1;
+            ControlFlow::Continue(())
+        }
+    }
+    let p = Bratu { analytic: true };
+    let start = Collocation::new()
+        .intervals(10)
+        .solve(&p, |_s: f64| [0.0, 0.0], &[0.0])
+        .unwrap();
+    let cont = Continuation::new(0)
+        .step(0.1)
+        .step_bounds(1e-3, 0.5)
+        .max_angle(0.05)
+        .max_steps(40);
+    let mut rejected = 0;
+    let b = cont.run(&p, &start, Count(&mut rejected)).unwrap();
+    let mut trace = cont.trace(&p, &start).unwrap();
+    let pts: Vec<_> = trace.by_ref().collect();
+    assert_eq!(pts.len(), b.points().len());
+    let regular = pts
+        .iter()
+        .filter(|q| q.kind() == PointKind::Regular)
+        .count();
+    assert_eq!(trace.steps(), regular);
+    assert_eq!(trace.steps(), 40);
+    // The angle limit of 0.05 rad rejects steps where the branch turns.
+    assert!(rejected > 0);
+    assert_eq!(trace.rejected(), rejected);
+    let accepted: u64 = pts.iter().map(|q| u64::from(q.newton_iterations())).sum();
+    assert!(trace.newton_iterations() >= accepted);
+    assert!(trace.newton_iterations() > 0);
+}
+
+#[test]
 fn without_branch_points_the_fold_is_the_same_with_fewer_factorisations() {
     // With branch-point detection off, steps whose chord corrector converged
     // fast keep the old factorisation and refine the tangent on it.
