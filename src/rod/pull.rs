@@ -25,14 +25,13 @@
 //! rod's phase condition keeps the pull free of them, as the `rod` tests
 //! check with it on), which lets the corrector keep its factorisation.
 
-use core::f64::consts::PI;
 use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
 
 use super::{Control, Equilibrium, Rod};
 use crate::bvp::{Collocation, Mesh};
 use crate::continuation::{Continuation, PointKind, Termination, Trace};
-use crate::curve::{FoldKind, ForceExtension, ForcePoint};
+use crate::curve::{self, Fold, FoldKind, ForceExtension, ForcePoint};
 use crate::error::{Error, Result};
 
 /// One accepted point of a pull.
@@ -68,32 +67,6 @@ pub struct Stretch {
     pub loops: u32,
     /// The smallest distance from planarity on the stretch.
     pub planarity: f64,
-}
-
-/// A located fold (limit point in the force).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct Fold {
-    /// Maximum or minimum of the force.
-    pub kind: FoldKind,
-    /// F_z at the fold.
-    pub force: f64,
-    /// F_z/(2πn)² at the fold.
-    pub force_scaled: f64,
-    /// Δz at the fold.
-    pub extension: f64,
-    /// Index of the last accepted point before the fold.
-    pub after_point: usize,
-}
-
-impl core::fmt::Display for Fold {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        write!(
-            f,
-            "{} at Δz = {:.6}, F/(2πn)² = {:.6}",
-            self.kind, self.extension, self.force_scaled
-        )
-    }
 }
 
 /// Why a pull ended.
@@ -166,7 +139,8 @@ pub struct PullRun {
     pub rod: Rod,
     /// Accepted points in continuation order (the first is the start).
     pub points: Vec<PullPoint>,
-    /// Located folds in order.
+    /// Located folds in order: each with its [`FoldKind`], the index of the
+    /// last point before it, and its force, extension and arclength.
     pub folds: Vec<Fold>,
     /// Why the run ended.
     pub termination: PullTermination,
@@ -201,7 +175,7 @@ impl PullRun {
     #[must_use]
     pub fn stretches(&self) -> Vec<Stretch> {
         let mut bounds = vec![0];
-        bounds.extend(self.folds.iter().map(|f| f.after_point + 1));
+        bounds.extend(self.folds.iter().map(|f| f.index + 1));
         bounds.push(self.points.len());
         bounds
             .windows(2)
@@ -268,7 +242,13 @@ impl core::fmt::Display for PullRun {
             self.termination
         )?;
         for fold in &self.folds {
-            writeln!(f, "  {fold}")?;
+            writeln!(
+                f,
+                "  {} at Δz = {:.6}, F/(2πn)² = {:.6}",
+                fold.kind,
+                fold.point.extension,
+                fold.point.force_scaled(self.rod.coils())
+            )?;
         }
         for s in self.stretches() {
             writeln!(
@@ -405,8 +385,7 @@ impl Pull {
     }
 
     fn scale(&self) -> f64 {
-        let k = 2.0 * PI * f64::from(self.rod.coils());
-        k * k
+        curve::force_scale(self.rod.coils())
     }
 
     fn validate(&self) -> Result<Collocation> {
@@ -561,7 +540,6 @@ impl Pull {
         observer: &mut O,
     ) -> Result<Option<PullTermination>> {
         let rod = self.rod;
-        let scale = self.scale();
         // dλ/ds at the last curve point, and (without fold location) its
         // equilibrium, which then stands for a fold detected after it.
         let mut last_dl = 0.0;
@@ -569,11 +547,16 @@ impl Pull {
         for p in trace {
             let dl = p.dparameter_ds();
             let detected = match p.kind() {
-                PointKind::Fold => Some(Equilibrium::new(rod, p.solution().clone())?),
-                _ if !self.locate_folds && last_dl * dl < 0.0 => last_eq.take(),
+                PointKind::Fold => Some((
+                    Equilibrium::new(rod, p.solution().clone())?,
+                    offset + p.arclength(),
+                )),
+                _ if !self.locate_folds && last_dl * dl < 0.0 => {
+                    last_eq.take().zip(run.points.last().map(|q| q.arclength))
+                }
                 _ => None,
             };
-            if let Some(eq) = detected {
+            if let Some((eq, arclength)) = detected {
                 let kind = match (rod.control(), last_dl > 0.0) {
                     (Control::Force, true) => FoldKind::MaxForce,
                     (Control::Force, false) => FoldKind::MinForce,
@@ -582,10 +565,12 @@ impl Pull {
                 };
                 let fold = Fold {
                     kind,
-                    force: eq.force(),
-                    force_scaled: eq.force() / scale,
-                    extension: eq.extension(),
-                    after_point: run.points.len() - 1,
+                    index: run.points.len() - 1,
+                    point: ForcePoint {
+                        extension: eq.extension(),
+                        force: eq.force(),
+                        parameter: arclength,
+                    },
                 };
                 run.folds.push(fold);
                 if observer.fold(&eq, &fold).is_break() {

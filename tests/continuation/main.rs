@@ -534,3 +534,40 @@ fn without_branch_points_the_fold_is_the_same_with_fewer_factorisations() {
         a.dparameter_ds() - b.dparameter_ds()
     );
 }
+
+#[test]
+fn distance_is_the_arclength_norm() {
+    // Pseudo-arclength puts the first point at ⟨x₁ − x₀, τ₀⟩ = Δs, so its
+    // distance from the start is Δs / cos α, α the angle between the secant
+    // and the tangent: α = O(Δs κ) ≈ 0.01 on the Bratu branch near λ = 0,
+    // so the two agree to ~α²/2 ≈ 1e-4 relative (bound 1e-3). Scaling every
+    // weight and θ by 4 doubles the norm exactly (homogeneity), up to
+    // rounding (1e-14).
+    let p = Bratu { analytic: true };
+    let start = Collocation::new()
+        .intervals(10)
+        .solve(&p, |_s: f64| [0.0, 0.0], &[0.0])
+        .unwrap();
+    let cont = Continuation::new(0).step(0.01);
+    let pts: Vec<_> = cont.trace(&p, &start).unwrap().take(2).collect();
+    let (a, b) = (pts[0].solution(), pts[1].solution());
+    let d = cont.distance(a, b).unwrap();
+    assert!(
+        ((d - pts[1].arclength()) / d).abs() < 1e-3,
+        "{d} vs {}",
+        pts[1].arclength()
+    );
+    assert_eq!(cont.distance(a, a).unwrap(), 0.0);
+    assert_eq!(cont.distance(a, b).unwrap(), cont.distance(b, a).unwrap());
+    let heavy = Continuation::new(0)
+        .weights(&[4.0, 4.0])
+        .parameter_weight(4.0);
+    let d4 = heavy.distance(a, b).unwrap();
+    assert!((d4 / d - 2.0).abs() < 1e-14, "{}", d4 / d);
+    // A solution on another mesh is refused.
+    let other = Collocation::new()
+        .intervals(7)
+        .solve(&p, |_s: f64| [0.0, 0.0], &[0.0])
+        .unwrap();
+    assert!(cont.distance(a, &other).is_err());
+}
