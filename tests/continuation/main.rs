@@ -415,18 +415,21 @@ fn continuation_with_a_free_parameter_and_an_integral_condition() {
     }
 }
 
+/// An observer that counts rejected steps.
+struct Count<'a>(&'a mut usize);
+
+impl hockle::continuation::Observer for Count<'_> {
+    fn step_rejected(&mut self, _new_ds: f64) -> ControlFlow<()> {
+        *self.0 += 1;
+        ControlFlow::Continue(())
+    }
+}
+
 #[test]
 fn angle_check_rejects_steps_and_reports() {
     // The Bratu branch turns (dλ/ds decreases from 0.957); an angle limit of
     // 1e-9 rad cannot be met once the tangent turns, so the step halves down
     // to ds_min and the run ends with AngleTooLarge, keeping its points.
-    struct Count<'a>(&'a mut usize);
-    impl hockle::continuation::Observer for Count<'_> {
-        fn step_rejected(&mut self, _new_ds: f64) -> ControlFlow<()> {
-            *self.0 += 1;
-            ControlFlow::Continue(())
-        }
-    }
     let p = Bratu { analytic: true };
     let start = Collocation::new()
         .intervals(10)
@@ -454,13 +457,6 @@ fn the_iterator_counts_steps_rejections_and_iterations() {
     // Driving the Trace by hand gives the same counts as the observer of
     // `run`: accepted steps = regular points, rejections = step_rejected
     // calls, and at least the corrector iterations of the accepted points.
-    struct Count<'a>(&'a mut usize);
-    impl hockle::continuation::Observer for Count<'_> {
-        fn step_rejected(&mut self, _new_ds: f64) -> ControlFlow<()> {
-            *self.0 += 1;
-            ControlFlow::Continue(())
-        }
-    }
     let p = Bratu { analytic: true };
     let start = Collocation::new()
         .intervals(10)
