@@ -148,7 +148,8 @@ pub struct PullRun {
     pub steps: usize,
     /// Rejected (retried) steps.
     pub rejected: usize,
-    /// Total Newton iterations, fold location included.
+    /// Total Newton iterations: the start, every corrector (rejected steps
+    /// and fold location included).
     pub newton_iterations: u64,
     /// Mesh intervals used.
     pub intervals: usize,
@@ -297,7 +298,7 @@ impl Pull {
     /// | [`points`](Self::points) | 4 Gauss points per interval |
     /// | [`step`](Self::step) | Δs = 2e-3 first, within [1e-7, 0.02] |
     /// | [`max_steps`](Self::max_steps) | 20 000 |
-    /// | [`max_angle`](Self::max_angle) | 0.3 rad between successive secants |
+    /// | [`max_angle`](Self::max_angle) | 0.3 rad between successive tangents |
     /// | [`locate_folds`](Self::locate_folds) | yes |
     #[must_use]
     pub fn new(rod: Rod) -> Self {
@@ -370,7 +371,7 @@ impl Pull {
         self
     }
 
-    /// Largest angle (radians) between successive secants.
+    /// Largest angle (radians) between successive tangents.
     #[must_use]
     pub fn max_angle(mut self, a: f64) -> Self {
         self.max_angle = a;
