@@ -41,7 +41,7 @@ impl PullObserver for Collect {
             hockle::rod::FoldKind::MinForce | hockle::rod::FoldKind::MinExtension => "min",
         };
         self.shapes.push((
-            format!("{what} fold, F/(2πn)² = {:.3}", f.force_scaled),
+            format!("{what} fold, F/(2πn)² = {:.3}", e.force_scaled()),
             e.clone(),
         ));
         ControlFlow::Continue(())

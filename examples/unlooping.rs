@@ -110,10 +110,10 @@ fn summary(run: &PullRun, branches: &[(u32, ForceExtension)]) {
         println!(
             "  {}: Δz {:.6} → {:.6}, F/(2πn)² {:.6} → {:.6}",
             i + 1,
-            a.extension,
-            b.extension,
-            a.force_scaled,
-            b.force_scaled
+            a.point.extension,
+            b.point.extension,
+            a.point.force_scaled(N),
+            b.point.force_scaled(N)
         );
     }
     println!("stretches and the elastica branch nearest to their near-planar part:");
@@ -233,7 +233,11 @@ fn plot(
             } else {
                 BLACK
             };
-            Circle::new((f.extension, f.force_scaled), 5, colour.filled())
+            Circle::new(
+                (f.point.extension, f.point.force_scaled(N)),
+                5,
+                colour.filled(),
+            )
         }))?
         .label("folds (red: maximum force, black: minimum)")
         .legend(|(x, y)| Circle::new((x + 10, y), 4, RED.filled()));

@@ -23,6 +23,28 @@ pub struct ForcePoint {
     pub parameter: f64,
 }
 
+impl ForcePoint {
+    /// The force divided by (2π `scale_coils`)², the scale of the paper's
+    /// plots (see [`ForceExtension::force_scale`]).
+    ///
+    /// ```
+    /// use hockle::ForcePoint;
+    /// let p = ForcePoint { extension: 0.5, force: 2.0, parameter: 0.0 };
+    /// let scale = (2.0 * std::f64::consts::PI * 4.0).powi(2);
+    /// assert_eq!(p.force_scaled(4), 2.0 / scale);
+    /// ```
+    #[must_use]
+    pub fn force_scaled(&self, scale_coils: u32) -> f64 {
+        self.force / force_scale(scale_coils)
+    }
+}
+
+/// (2πn)², the force scale of the paper's plots.
+pub(crate) fn force_scale(coils: u32) -> f64 {
+    let two_pi_n = 2.0 * std::f64::consts::PI * f64::from(coils);
+    two_pi_n * two_pi_n
+}
+
 /// A force–extension curve: equilibria in order, with the scale of the
 /// paper's plots.
 ///
@@ -99,8 +121,7 @@ impl ForceExtension {
     /// The scale (2πn)² that divides the force in the paper's plots.
     #[must_use]
     pub fn force_scale(&self) -> f64 {
-        let two_pi_n = 2.0 * std::f64::consts::PI * f64::from(self.scale_coils);
-        two_pi_n * two_pi_n
+        force_scale(self.scale_coils)
     }
 
     /// The points, in order.
@@ -201,9 +222,13 @@ pub enum FoldKind {
 pub struct Fold {
     /// What turns.
     pub kind: FoldKind,
-    /// The index of the curve point nearest the fold.
+    /// The index of the curve point at which the fold was found: the
+    /// extreme sample where a curve's folds are detected from its points
+    /// ([`ForceExtension::folds`]), the last point before the fold where a
+    /// model located it between points (continuation).
     pub index: usize,
-    /// The fold itself (located between curve points where the model could).
+    /// The fold itself (located between curve points where the model could;
+    /// its parameter is then the curve parameter at the fold).
     pub point: ForcePoint,
 }
 

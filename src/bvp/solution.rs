@@ -58,6 +58,12 @@ impl Solution {
         self.tab.m
     }
 
+    /// The m Gauss–Legendre weights on [0, 1] of the collocation points
+    /// (multiply by an interval's width for the composite rule).
+    pub(crate) fn gauss_weights(&self) -> &[f64] {
+        &self.tab.b
+    }
+
     /// The dimension n of the ODE system.
     #[must_use]
     pub fn dim(&self) -> usize {

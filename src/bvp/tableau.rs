@@ -175,6 +175,16 @@ mod tests {
     use super::*;
 
     #[test]
+    fn gauss_weights_are_the_legendre_weights() {
+        // A&S Table 25.4, halved for [0, 1].
+        let w = Tableau::new(4).b;
+        let r = [0.173_927_422_568_726_9, 0.326_072_577_431_273_1];
+        for (a, b) in w.iter().zip([r[0], r[1], r[1], r[0]]) {
+            assert!((a - b).abs() < 1e-15, "{a} vs {b}");
+        }
+    }
+
+    #[test]
     fn gauss_rule_is_exact_to_degree_2m_minus_1() {
         for m in 2..=7 {
             let t = Tableau::new(m);

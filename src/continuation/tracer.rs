@@ -561,6 +561,54 @@ impl Continuation {
         Ok(())
     }
 
+    /// The distance ‖a − b‖ of two solutions in this continuation's norm
+    /// (module docs: weights w_i, θ on the solver's free parameters and λ),
+    /// integrals by the Gauss rule of the solver, so that it measures
+    /// arclength the way [`Point::arclength`] does (e.g. to join a point
+    /// computed before the run to the branch).
+    ///
+    /// # Errors
+    /// [`Error::LengthMismatch`] or [`Error::InvalidCount`] unless both
+    /// solutions have the dimension of the weights, the solver's points per
+    /// interval, and the same mesh; bad settings as [`Continuation::trace`].
+    pub fn distance(&self, a: &Solution, b: &Solution) -> Result<f64> {
+        let n = a.dim();
+        self.validate(n, a.parameters().len())?;
+        let tab = self.solver.validate()?;
+        if b.dim() != n || b.parameters().len() != a.parameters().len() {
+            return Err(Error::LengthMismatch {
+                name: "solution dimension",
+                found: b.dim() as u64,
+                expected: n as u64,
+            });
+        }
+        for s in [a, b] {
+            if s.points_per_interval() != tab.m || s.mesh() != a.mesh() {
+                return Err(Error::InvalidCount {
+                    name: "points per interval",
+                    value: s.points_per_interval() as u64,
+                    allowed: "the solver's m, on the same mesh for both solutions",
+                });
+            }
+        }
+        let (ya, yb) = (a.collocation_values(), b.collocation_values());
+        let mesh = a.mesh();
+        let mut sum = 0.0;
+        for j in 0..mesh.intervals() {
+            let h = mesh.width(j);
+            for (k, bk) in tab.b.iter().enumerate() {
+                for i in 0..n {
+                    let w = self.weights.as_ref().map_or(1.0, |w| w[i]);
+                    sum += h * bk * w * (ya[(i, j * tab.m + k)] - yb[(i, j * tab.m + k)]).powi(2);
+                }
+            }
+        }
+        for &q in self.solver.free().iter().chain([&self.parameter]) {
+            sum += self.parameter_weight * (a.parameters()[q] - b.parameters()[q]).powi(2);
+        }
+        Ok(sum.sqrt())
+    }
+
     /// A step-by-step iterator over the branch through `start` (a solution
     /// of the problem at its parameter values). The first item is the start
     /// point.
@@ -712,6 +760,8 @@ pub struct Trace<'a, P: Problem + ?Sized> {
     pending: VecDeque<Point>,
     termination: Option<Termination>,
     rejections: Vec<f64>,
+    rejected: usize,
+    newton_iterations: u64,
     ycol_a: Vec<f64>,
     ycol_b: Vec<f64>,
 }
@@ -795,6 +845,8 @@ impl<'a, P: Problem + ?Sized> Trace<'a, P> {
             pending: VecDeque::new(),
             termination: None,
             rejections: Vec::new(),
+            rejected: 0,
+            newton_iterations: 0,
             ycol_a: vec![0.0; len],
             ycol_b: vec![0.0; len],
         };
@@ -896,6 +948,25 @@ impl<'a, P: Problem + ?Sized> Trace<'a, P> {
     #[must_use]
     pub fn step_size(&self) -> f64 {
         self.ds
+    }
+
+    /// Accepted steps so far.
+    #[must_use]
+    pub fn steps(&self) -> usize {
+        self.steps
+    }
+
+    /// Rejected (halved and retried) steps so far.
+    #[must_use]
+    pub fn rejected(&self) -> usize {
+        self.rejected
+    }
+
+    /// Corrector iterations so far: accepted, rejected and special-point
+    /// location correctors alike (failed correctors are not counted).
+    #[must_use]
+    pub fn newton_iterations(&self) -> u64 {
+        self.newton_iterations
     }
 
     fn inner(&mut self, a: &State, b: &State) -> f64 {
@@ -1006,6 +1077,7 @@ impl<'a, P: Problem + ?Sized> Trace<'a, P> {
             self.sys.phase_c()?;
         }
         let stats = newton(&mut self.sys, &mut x, self.opts, reuse)?;
+        self.newton_iterations += u64::from(stats.iterations);
         // Without branch-point detection the determinant is not needed: when
         // the chord corrector converged fast on the old factorisation, keep
         // it and refine the tangent on it instead of factorising again.
@@ -1205,6 +1277,7 @@ impl<'a, P: Problem + ?Sized> Trace<'a, P> {
             }
             self.factored_at_x0 = false;
             self.ds = (0.5 * self.ds).max(self.cont.ds_min);
+            self.rejected += 1;
             self.rejections.push(self.ds);
         };
         self.steps += 1;

@@ -127,7 +127,7 @@ impl Equilibrium {
         let m = sol.points_per_interval();
         let nn = sol.mesh().intervals();
         let cv = sol.collocation_values();
-        let gw = measure::gauss_weights(m);
+        let gw = sol.gauss_weights();
         let mut out = Vec::with_capacity(nn * (m + 1) + 1);
         let state = |col: &[f64]| {
             let mut y = [0.0; 13];

@@ -35,48 +35,6 @@ pub(crate) fn integrate<G: FnMut(f64) -> f64>(breaks: &[f64], sub: usize, mut g:
     total
 }
 
-/// The m Gauss–Legendre weights on [0, 1] (from the moment equations
-/// Σ_k w_k c_k^i = 1/(i + 1) at the nodes c_k of the m-point rule).
-pub(crate) fn gauss_weights(m: usize) -> Vec<f64> {
-    // Nodes: roots of the shifted Legendre polynomial by Newton from the
-    // Chebyshev guesses (Golub–Welsch would do as well; m ≤ 7 here).
-    let mut nodes = Vec::with_capacity(m);
-    for k in 0..m {
-        let mut x = -((PI * (k as f64 + 0.75)) / (m as f64 + 0.5)).cos();
-        for _ in 0..100 {
-            let (mut p0, mut p1) = (1.0, x);
-            for n in 2..=m {
-                let nf = n as f64;
-                let p2 = ((2.0 * nf - 1.0) * x * p1 - (nf - 1.0) * p0) / nf;
-                p0 = p1;
-                p1 = p2;
-            }
-            let dp = m as f64 * (x * p1 - p0) / (x * x - 1.0);
-            let dx = p1 / dp;
-            x -= dx;
-            if dx.abs() < 1e-16 {
-                break;
-            }
-        }
-        nodes.push(x);
-    }
-    nodes
-        .iter()
-        .map(|&x| {
-            let (mut p0, mut p1) = (1.0, x);
-            for n in 2..=m {
-                let nf = n as f64;
-                let p2 = ((2.0 * nf - 1.0) * x * p1 - (nf - 1.0) * p0) / nf;
-                p0 = p1;
-                p1 = p2;
-            }
-            let dp = m as f64 * (x * p1 - p0) / (x * x - 1.0);
-            // Weight on [−1, 1] is 2/((1 − x²) P′²); halve for [0, 1].
-            1.0 / ((1.0 - x * x) * dp * dp)
-        })
-        .collect()
-}
-
 /// The material strains u(s) of the state y (u = D⁻¹ Rᵀ M + u0).
 pub(crate) fn strains(rod: &Rod, theta0: f64, y: &[f64; 13]) -> Vector3<f64> {
     let r = rot(&y[3..7]);
@@ -177,23 +135,5 @@ pub(crate) fn turning(samples: &[(f64, [f64; 13])]) -> Turning {
     Turning {
         turns: (total / (2.0 * PI)).abs(),
         loops: u32::try_from(crossings).unwrap_or(u32::MAX),
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn gauss_weights_are_the_legendre_weights() {
-        // A&S Table 25.4, halved for [0, 1].
-        let w = gauss_weights(4);
-        let r = [0.173_927_422_568_726_9, 0.326_072_577_431_273_1];
-        for (a, b) in w.iter().zip([r[0], r[1], r[1], r[0]]) {
-            assert!((a - b).abs() < 1e-15, "{a} vs {b}");
-        }
-        for m in 1..=7 {
-            assert!((gauss_weights(m).iter().sum::<f64>() - 1.0).abs() < 1e-14);
-        }
     }
 }

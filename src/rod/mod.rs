@@ -20,7 +20,12 @@
 //! assert_eq!(run.pop_outs().len(), 3);
 //! assert_eq!(run.loops_lost(), 3);
 //! for (max, min) in run.pop_outs() {
-//!     println!("pop-out at Δz = {:.4}, F/(2πn)² = {:.4} → {:.4}", max.extension, max.force_scaled, min.force_scaled);
+//!     println!(
+//!         "pop-out at Δz = {:.4}, F/(2πn)² = {:.4} → {:.4}",
+//!         max.point.extension,
+//!         max.point.force_scaled(4),
+//!         min.point.force_scaled(4)
+//!     );
 //! }
 //! # Ok::<(), hockle::Error>(())
 //! ```
@@ -124,9 +129,9 @@ use nalgebra::Vector3;
 use crate::error::{Error, Result};
 use crate::helix::Stiffness;
 
-pub use crate::curve::FoldKind;
+pub use crate::curve::{Fold, FoldKind};
 pub use equilibrium::Equilibrium;
-pub use pull::{Fold, Pull, PullObserver, PullPoint, PullRun, PullTermination, Stretch};
+pub use pull::{Pull, PullObserver, PullPoint, PullRun, PullTermination, Stretch};
 
 /// Which end load is prescribed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

@@ -1,39 +1,37 @@
 //! Pulling the spring: pseudo-arclength continuation in the force (or the
 //! extension) from the unstressed helix, with the pop-outs (folds) located.
 //!
-//! This driver is written on [`Collocation::solve`] alone (the rod's
-//! phase condition needs the previous point as `y_ref`, and the arclength
-//! condition is one more integral condition), so it owns its secant
-//! predictor, step control and fold location; `crate::continuation` is the
-//! general tool (used by the tests for branch points at θ0 = 90°).
+//! [`Pull`] is a rod-specific front end to [`crate::continuation`]: it
+//! chooses the norm, the start and the stop, and turns the continuation's
+//! points into [`PullPoint`]s (force, extension, loop count, planarity) and
+//! its located folds into [`Fold`]s.
 //!
 //! ```text
-//!   unknowns  x = (y(·), λ),   λ = F_z
+//!   unknowns  x = (y(·), λ),   λ = F_z  (or Δz under extension control)
 //!   equations rod BVP (collocation) and
 //!             ⟨y − y_k, ẏ_k⟩ + θ (λ − λ_k) λ̇_k = Δs        (pseudo-arclength)
 //!   ⟨a, b⟩  = Σ_i w_i ∫₀¹ a_i b_i ds,   w = 1 (r, q), 1/(2πn)⁴ (F), 1e-3 (M),
-//!             θ = 1/(2πn)⁴  (forces measured in the paper's scale)
+//!             θ = 1/(2πn)⁴ under force control, 1 under extension control
 //! ```
 //!
-//! The tangent (ẏ_k, λ̇_k) is the normalised secant through the last two
-//! points. The arclength condition is an integral condition of the
-//! collocation system (its constant terms integrate to themselves), so the
-//! whole step is one [`Collocation::solve`] with λ free. Step control: Δs ×1.5
-//! after ≤ 3 Newton iterations, ×0.7 after ≥ 7, ×½ and retry on failure or
-//! when the secant turns by more than the maximum angle (which keeps the
-//! trace from jumping between nearby branches). A fold is a sign change of
-//! λ̇; it is located by parabolic interpolation of λ(σ) along the arclength
-//! through the point before it, to |Δσ| ≤ 1e-9.
+//! The run starts from the unstressed helix (λ = 0) and a second solution
+//! a small load away (F/(2πn)² = ±1e-4, or Δz ± 1e-4), from which the
+//! continuation takes its first step Δs = 2e-3: small enough not to jump
+//! over the helix's initial turn-and-shear stretch at almost constant force.
+//! Step control, tangents and fold location (Illinois iteration on the
+//! arclength of the step, to 1e-9) are [`crate::continuation`]'s, with the
+//! angle check between successive tangents (0.3 rad) that keeps the trace
+//! from jumping between nearby branches; branch-point detection is off (the
+//! rod's phase condition keeps the pull free of them, as the `rod` tests
+//! check with it on), which lets the corrector keep its factorisation.
 
-use core::f64::consts::PI;
 use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
 
-use nalgebra::DMatrixViewMut;
-
 use super::{Control, Equilibrium, Rod};
-use crate::bvp::{Collocation, Mesh, Problem, Solution};
-use crate::curve::{FoldKind, ForceExtension, ForcePoint};
+use crate::bvp::{Collocation, Mesh};
+use crate::continuation::{Continuation, PointKind, Termination, Trace};
+use crate::curve::{self, Fold, FoldKind, ForceExtension, ForcePoint};
 use crate::error::{Error, Result};
 
 /// One accepted point of a pull.
@@ -69,32 +67,6 @@ pub struct Stretch {
     pub loops: u32,
     /// The smallest distance from planarity on the stretch.
     pub planarity: f64,
-}
-
-/// A located fold (limit point in the force).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct Fold {
-    /// Maximum or minimum of the force.
-    pub kind: FoldKind,
-    /// F_z at the fold.
-    pub force: f64,
-    /// F_z/(2πn)² at the fold.
-    pub force_scaled: f64,
-    /// Δz at the fold.
-    pub extension: f64,
-    /// Index of the last accepted point before the fold.
-    pub after_point: usize,
-}
-
-impl core::fmt::Display for Fold {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        write!(
-            f,
-            "{} at Δz = {:.6}, F/(2πn)² = {:.6}",
-            self.kind, self.extension, self.force_scaled
-        )
-    }
 }
 
 /// Why a pull ended.
@@ -167,7 +139,8 @@ pub struct PullRun {
     pub rod: Rod,
     /// Accepted points in continuation order (the first is the start).
     pub points: Vec<PullPoint>,
-    /// Located folds in order.
+    /// Located folds in order: each with its [`FoldKind`], the index of the
+    /// last point before it, and its force, extension and arclength.
     pub folds: Vec<Fold>,
     /// Why the run ended.
     pub termination: PullTermination,
@@ -175,7 +148,8 @@ pub struct PullRun {
     pub steps: usize,
     /// Rejected (retried) steps.
     pub rejected: usize,
-    /// Total Newton iterations, fold location included.
+    /// Total Newton iterations: the start, every corrector (rejected steps
+    /// and fold location included).
     pub newton_iterations: u64,
     /// Mesh intervals used.
     pub intervals: usize,
@@ -202,7 +176,7 @@ impl PullRun {
     #[must_use]
     pub fn stretches(&self) -> Vec<Stretch> {
         let mut bounds = vec![0];
-        bounds.extend(self.folds.iter().map(|f| f.after_point + 1));
+        bounds.extend(self.folds.iter().map(|f| f.index + 1));
         bounds.push(self.points.len());
         bounds
             .windows(2)
@@ -269,7 +243,13 @@ impl core::fmt::Display for PullRun {
             self.termination
         )?;
         for fold in &self.folds {
-            writeln!(f, "  {fold}")?;
+            writeln!(
+                f,
+                "  {} at Δz = {:.6}, F/(2πn)² = {:.6}",
+                fold.kind,
+                fold.point.extension,
+                fold.point.force_scaled(self.rod.coils())
+            )?;
         }
         for s in self.stretches() {
             writeln!(
@@ -318,7 +298,7 @@ impl Pull {
     /// | [`points`](Self::points) | 4 Gauss points per interval |
     /// | [`step`](Self::step) | Δs = 2e-3 first, within [1e-7, 0.02] |
     /// | [`max_steps`](Self::max_steps) | 20 000 |
-    /// | [`max_angle`](Self::max_angle) | 0.3 rad between successive secants |
+    /// | [`max_angle`](Self::max_angle) | 0.3 rad between successive tangents |
     /// | [`locate_folds`](Self::locate_folds) | yes |
     #[must_use]
     pub fn new(rod: Rod) -> Self {
@@ -391,7 +371,7 @@ impl Pull {
         self
     }
 
-    /// Largest angle (radians) between successive secants.
+    /// Largest angle (radians) between successive tangents.
     #[must_use]
     pub fn max_angle(mut self, a: f64) -> Self {
         self.max_angle = a;
@@ -406,8 +386,7 @@ impl Pull {
     }
 
     fn scale(&self) -> f64 {
-        let k = 2.0 * PI * f64::from(self.rod.coils());
-        k * k
+        curve::force_scale(self.rod.coils())
     }
 
     fn validate(&self) -> Result<Collocation> {
@@ -482,24 +461,15 @@ impl Pull {
         let rod = self.rod;
         let scale = self.scale();
         let p0 = rod.parameters_at_rest();
-        let (param, theta, sign) = match rod.control() {
-            Control::Force => (
-                Rod::FORCE,
-                1.0 / (scale * scale),
-                if self.target >= 0.0 { 1.0 } else { -1.0 },
-            ),
-            Control::Extension => (
-                Rod::EXTENSION,
-                1.0,
-                if self.target >= p0[Rod::EXTENSION] {
-                    1.0
-                } else {
-                    -1.0
-                },
-            ),
+        let (param, theta, stop) = match rod.control() {
+            Control::Force => (Rod::FORCE, 1.0 / (scale * scale), self.target * scale),
+            Control::Extension => (Rod::EXTENSION, 1.0, self.target),
         };
+        let sign = if stop >= p0[param] { 1.0 } else { -1.0 };
         let s0 = solver.solve(&rod, |s: f64| rod.unstressed(s), &p0)?;
-        // A second point a small load away gives the first secant.
+        // A second point a small load away starts the continuation, so that
+        // its first step (Δs = ds0) cannot jump over the initial turn-and-
+        // shear stretch at almost constant force.
         let mut p1 = p0;
         match rod.control() {
             Control::Force => p1[Rod::FORCE] = sign * 1e-4 * scale,
@@ -507,113 +477,122 @@ impl Pull {
         }
         let s1 = solver.solve(&rod, &s0, &p1)?;
         run.newton_iterations += u64::from(s0.newton().iterations + s1.newton().iterations);
-
-        let arc_solver = solver.clone().free_parameters(&[param]);
-        let weights = weights(scale);
-        let prev = Cached::new(s0, &weights, theta, param);
-        let mut cur = Cached::new(s1, &weights, theta, param);
-        let mut arclength = prev.distance(&cur);
-        for (c, a) in [(&prev, 0.0), (&cur, arclength)] {
-            let eq = Equilibrium::new(rod, c.solution.clone())?;
-            let pt = self.point(&eq, a, c.solution.newton().iterations);
-            run.points.push(pt);
-            if observer.point(&eq, &pt).is_break() {
-                return Ok(PullTermination::Stopped);
-            }
+        let cont = Continuation::new(param)
+            .solver(solver)
+            .weights(&weights(scale))
+            .parameter_weight(theta)
+            .step(sign * self.ds0)
+            .step_bounds(self.ds_min, self.ds_max)
+            .max_steps(self.max_steps)
+            .max_angle(self.max_angle)
+            .locate_tolerance(1e-9)
+            .detect_folds(self.locate_folds)
+            .detect_branch_points(false)
+            .stop_at(stop);
+        let offset = cont.distance(&s0, &s1)?;
+        let eq = Equilibrium::new(rod, s0)?;
+        let pt = self.point(&eq, 0.0, eq.solution().newton().iterations);
+        run.points.push(pt);
+        if observer.point(&eq, &pt).is_break() {
+            return Ok(PullTermination::Stopped);
         }
-        let mut tangent = Tangent::secant(&prev, &cur, arclength);
-        let mut ds = self.ds0;
-        loop {
-            if run.steps >= self.max_steps {
-                return Ok(PullTermination::MaxSteps(self.max_steps));
-            }
-            let attempt = self.corrector(&rod, &arc_solver, &cur, &tangent, ds);
-            let next = match attempt {
-                Ok(sol) => {
-                    run.newton_iterations += u64::from(sol.newton().iterations);
-                    let next = Cached::new(sol, &weights, theta, param);
-                    let step = cur.distance(&next);
-                    let t_new = Tangent::secant(&cur, &next, step);
-                    if tangent.cos_angle(&t_new, &weights, theta) < self.max_angle.cos() {
-                        Err((
-                            Error::InvalidArgument {
-                                name: "step angle",
-                                value: ds,
-                                allowed: "secants turning by less than the maximum angle",
-                            },
-                            None,
-                        ))
-                    } else {
-                        Ok((next, t_new, step))
-                    }
+        let mut trace = cont.trace(&rod, &s1)?;
+        let outcome = self.follow(&mut trace, offset, run, observer);
+        run.steps = trace.steps();
+        run.rejected = trace.rejected();
+        run.newton_iterations += trace.newton_iterations();
+        if let Some(t) = outcome? {
+            return Ok(t);
+        }
+        Ok(match trace.termination() {
+            Some(Termination::ParameterValue(_)) | None => PullTermination::ReachedForce,
+            Some(Termination::MaxSteps(n)) => PullTermination::MaxSteps(*n),
+            Some(Termination::Stopped) => PullTermination::Stopped,
+            Some(Termination::NewtonFailed { reason: e, .. })
+            | Some(Termination::Singular(e))
+            | Some(Termination::NonFinite(e)) => PullTermination::StepTooSmall { error: e.clone() },
+            Some(Termination::AngleTooLarge { angle, .. }) => PullTermination::StepTooSmall {
+                error: Error::InvalidArgument {
+                    name: "step angle",
+                    value: *angle,
+                    allowed: "tangents turning by less than the maximum angle",
+                },
+            },
+            Some(other) => PullTermination::StepTooSmall {
+                error: Error::InvalidArgument {
+                    name: "continuation",
+                    value: f64::NAN,
+                    allowed: match other {
+                        Termination::Event(_) => "no user events in a pull",
+                        _ => "a known continuation termination",
+                    },
+                },
+            },
+        })
+    }
+
+    /// Turns the continuation's points into pull points and folds, calling
+    /// the observer; `Some` when the observer stopped the run.
+    fn follow<O: PullObserver>(
+        &self,
+        trace: &mut Trace<'_, Rod>,
+        offset: f64,
+        run: &mut PullRun,
+        observer: &mut O,
+    ) -> Result<Option<PullTermination>> {
+        let rod = self.rod;
+        // dλ/ds at the last curve point, and (without fold location) its
+        // equilibrium, which then stands for a fold detected after it.
+        let mut last_dl = 0.0;
+        let mut last_eq: Option<Equilibrium> = None;
+        for p in trace {
+            let dl = p.dparameter_ds();
+            let detected = match p.kind() {
+                PointKind::Fold => Some((
+                    Equilibrium::new(rod, p.solution().clone())?,
+                    offset + p.arclength(),
+                )),
+                _ if !self.locate_folds && last_dl * dl < 0.0 => {
+                    last_eq.take().zip(run.points.last().map(|q| q.arclength))
                 }
-                Err(e) => Err((e, None::<()>)),
+                _ => None,
             };
-            let (next, t_new, step) = match next {
-                Ok(v) => v,
-                Err((e, _)) => {
-                    run.rejected += 1;
-                    ds *= 0.5;
-                    if ds < self.ds_min {
-                        return Ok(PullTermination::StepTooSmall { error: e });
-                    }
-                    continue;
-                }
-            };
-            run.steps += 1;
-            let its = next.solution.newton().iterations;
-            arclength += step;
-            // A fold: the force turned between the previous secant and this one.
-            if tangent.dlambda * t_new.dlambda < 0.0 {
-                let kind = match (rod.control(), tangent.dlambda > 0.0) {
+            if let Some((eq, arclength)) = detected {
+                let kind = match (rod.control(), last_dl > 0.0) {
                     (Control::Force, true) => FoldKind::MaxForce,
                     (Control::Force, false) => FoldKind::MinForce,
                     (Control::Extension, true) => FoldKind::MaxExtension,
                     (Control::Extension, false) => FoldKind::MinExtension,
                 };
-                let located = if self.locate_folds {
-                    self.locate(&rod, &arc_solver, &cur, &t_new, step, run)
-                } else {
-                    Ok(cur.solution.clone())
-                };
-                if let Ok(sol) = located {
-                    let eq = Equilibrium::new(rod, sol)?;
-                    let fold = Fold {
-                        kind,
-                        force: eq.force(),
-                        force_scaled: eq.force() / scale,
+                let fold = Fold {
+                    kind,
+                    index: run.points.len() - 1,
+                    point: ForcePoint {
                         extension: eq.extension(),
-                        after_point: run.points.len() - 1,
-                    };
-                    run.folds.push(fold);
-                    if observer.fold(&eq, &fold).is_break() {
-                        return Ok(PullTermination::Stopped);
-                    }
+                        force: eq.force(),
+                        parameter: arclength,
+                    },
+                };
+                run.folds.push(fold);
+                if observer.fold(&eq, &fold).is_break() {
+                    return Ok(Some(PullTermination::Stopped));
                 }
             }
-            let eq = Equilibrium::new(rod, next.solution.clone())?;
-            let pt = self.point(&eq, arclength, its);
+            if p.kind() == PointKind::Fold {
+                continue;
+            }
+            let eq = Equilibrium::new(rod, p.solution().clone())?;
+            let pt = self.point(&eq, offset + p.arclength(), p.newton_iterations());
             run.points.push(pt);
             if observer.point(&eq, &pt).is_break() {
-                return Ok(PullTermination::Stopped);
+                return Ok(Some(PullTermination::Stopped));
             }
-            let reached = match rod.control() {
-                Control::Force => pt.force_scaled,
-                Control::Extension => pt.extension,
-            };
-            if sign * reached >= sign * self.target {
-                return Ok(PullTermination::ReachedForce);
+            last_dl = dl;
+            if !self.locate_folds {
+                last_eq = Some(eq);
             }
-            cur = next;
-            tangent = t_new;
-            ds = if its <= 3 {
-                (ds * 1.5).min(self.ds_max)
-            } else if its >= 7 {
-                (ds * 0.7).max(self.ds_min)
-            } else {
-                ds
-            };
         }
+        Ok(None)
     }
 
     fn point(&self, eq: &Equilibrium, arclength: f64, its: u32) -> PullPoint {
@@ -628,92 +607,6 @@ impl Pull {
             planarity,
         }
     }
-
-    /// One corrector solve on the hyperplane ⟨x − x_k, τ⟩ = σ from the
-    /// predictor x_k + σ τ.
-    fn corrector(
-        &self,
-        rod: &Rod,
-        solver: &Collocation,
-        cur: &Cached,
-        tangent: &Tangent,
-        sigma: f64,
-    ) -> Result<Solution> {
-        let problem = Arclength {
-            rod,
-            anchor: cur,
-            tangent,
-            sigma,
-            weights: cur.weights,
-            theta: cur.theta,
-        };
-        let mut p = *cur.parameters();
-        p[cur.param] += sigma * tangent.dlambda;
-        let guess = |s: f64| {
-            let mut y = [0.0; 13];
-            cur.solution.eval_into(s, &mut y);
-            let t = tangent.at(s);
-            for i in 0..13 {
-                y[i] += sigma * t[i];
-            }
-            y
-        };
-        solver.solve(&problem, guess, &p)
-    }
-
-    /// Parabolic interpolation of λ(σ) along the hyperplanes through the
-    /// point before the fold, to |Δσ| ≤ 1e-9.
-    fn locate(
-        &self,
-        rod: &Rod,
-        solver: &Collocation,
-        before: &Cached,
-        tangent: &Tangent,
-        step: f64,
-        run: &mut PullRun,
-    ) -> Result<Solution> {
-        let mut samples: Vec<(f64, f64, Option<Solution>)> = vec![(0.0, before.lambda(), None)];
-        for sigma in [0.5 * step, step] {
-            let sol = self.corrector(rod, solver, before, tangent, sigma)?;
-            run.newton_iterations += u64::from(sol.newton().iterations);
-            samples.push((sigma, sol.parameters()[before.param], Some(sol)));
-        }
-        for _ in 0..12 {
-            let (a, b, c) = (&samples[0], &samples[1], &samples[2]);
-            let (x0, x1, x2) = (a.0, b.0, c.0);
-            let (f0, f1, f2) = (a.1, b.1, c.1);
-            let num = (x1 - x0).powi(2) * (f1 - f2) - (x1 - x2).powi(2) * (f1 - f0);
-            let den = (x1 - x0) * (f1 - f2) - (x1 - x2) * (f1 - f0);
-            if den == 0.0 {
-                break;
-            }
-            let x = x1 - 0.5 * num / den;
-            if !x.is_finite() || (x - x1).abs() <= 1e-9 {
-                break;
-            }
-            let sol = self.corrector(rod, solver, before, tangent, x)?;
-            run.newton_iterations += u64::from(sol.newton().iterations);
-            let f = sol.parameters()[before.param];
-            samples.push((x, f, Some(sol)));
-            // Keep the three samples closest to the new abscissa.
-            samples.sort_by(|p, q| (p.0 - x).abs().total_cmp(&(q.0 - x).abs()));
-            samples.truncate(3);
-            samples.sort_by(|p, q| p.0.total_cmp(&q.0));
-        }
-        // The sample with the extreme force.
-        let best = samples
-            .into_iter()
-            .filter_map(|s| s.2.map(|sol| (s.1, sol)))
-            .max_by(|p, q| {
-                let sgn = if p.0 > before.lambda() { 1.0 } else { -1.0 };
-                (sgn * p.0).total_cmp(&(sgn * q.0))
-            });
-        best.map(|b| b.1).ok_or(Error::InvalidArgument {
-            name: "fold",
-            value: before.lambda(),
-            allowed: "a fold bracketed by converged points",
-        })
-    }
 }
 
 /// Weights of the continuation norm (module docs).
@@ -726,258 +619,4 @@ fn weights(scale: f64) -> [f64; 13] {
         *wi = 1e-3;
     }
     w
-}
-
-/// A solution with its values at the collocation points (the quadrature
-/// nodes of every integral condition) cached.
-struct Cached {
-    solution: Solution,
-    nodes: Vec<f64>,
-    values: Vec<[f64; 13]>,
-    quad: Vec<f64>,
-    weights: [f64; 13],
-    theta: f64,
-    param: usize,
-}
-
-impl Cached {
-    fn new(solution: Solution, weights: &[f64; 13], theta: f64, param: usize) -> Self {
-        let nodes = solution.collocation_points();
-        let cv = solution.collocation_values();
-        let values = (0..nodes.len())
-            .map(|k| {
-                let mut y = [0.0; 13];
-                for (i, yi) in y.iter_mut().enumerate() {
-                    *yi = cv[(i, k)];
-                }
-                y
-            })
-            .collect();
-        // Gauss weights of the composite rule, recovered per interval from
-        // the node positions (the rule integrates polynomials of degree
-        // 2m − 1, so solving the moment equations is exact).
-        let quad = quadrature_weights(&solution, &nodes);
-        Self {
-            solution,
-            nodes,
-            values,
-            quad,
-            weights: *weights,
-            theta,
-            param,
-        }
-    }
-
-    fn parameters(&self) -> &[f64; 3] {
-        self.solution
-            .parameters()
-            .try_into()
-            .expect("rod solutions have 3 parameters")
-    }
-
-    /// The continuation parameter λ.
-    fn lambda(&self) -> f64 {
-        self.parameters()[self.param]
-    }
-
-    fn index(&self, s: f64) -> Option<usize> {
-        self.nodes.binary_search_by(|x| x.total_cmp(&s)).ok()
-    }
-
-    /// ‖x − y‖ in the continuation norm.
-    fn distance(&self, other: &Cached) -> f64 {
-        let (w, theta) = (&self.weights, self.theta);
-        let mut t = 0.0;
-        for k in 0..self.nodes.len() {
-            let (a, b) = (&self.values[k], &other.values[k]);
-            let mut v = 0.0;
-            for i in 0..13 {
-                v += w[i] * (a[i] - b[i]).powi(2);
-            }
-            t += self.quad[k] * v;
-        }
-        let dl = self.lambda() - other.lambda();
-        (t + theta * dl * dl).sqrt()
-    }
-}
-
-fn quadrature_weights(solution: &Solution, nodes: &[f64]) -> Vec<f64> {
-    let m = solution.points_per_interval();
-    let mesh = solution.mesh();
-    let mut out = Vec::with_capacity(nodes.len());
-    for j in 0..mesh.intervals() {
-        let h = mesh.width(j);
-        let t0 = mesh.points()[j];
-        let c: Vec<f64> = (0..m).map(|k| (nodes[j * m + k] - t0) / h).collect();
-        // Solve Σ_k w_k c_k^i = 1/(i+1), i = 0..m−1 (Vandermonde).
-        let mut a = nalgebra::DMatrix::zeros(m, m);
-        let mut b = nalgebra::DVector::zeros(m);
-        for i in 0..m {
-            for k in 0..m {
-                a[(i, k)] = c[k].powi(i as i32);
-            }
-            b[i] = 1.0 / (i as f64 + 1.0);
-        }
-        let w = a
-            .lu()
-            .solve(&b)
-            .unwrap_or_else(|| nalgebra::DVector::from_element(m, 1.0 / m as f64));
-        out.extend(w.iter().map(|wk| wk * h));
-    }
-    out
-}
-
-/// The unit secant (ẏ, λ̇) at the collocation points.
-struct Tangent {
-    nodes: Vec<f64>,
-    values: Vec<[f64; 13]>,
-    quad: Vec<f64>,
-    dlambda: f64,
-    from: Solution,
-    to: Solution,
-    step: f64,
-}
-
-impl Tangent {
-    fn secant(a: &Cached, b: &Cached, step: f64) -> Self {
-        let values = a
-            .values
-            .iter()
-            .zip(&b.values)
-            .map(|(x, y)| {
-                let mut t = [0.0; 13];
-                for i in 0..13 {
-                    t[i] = (y[i] - x[i]) / step;
-                }
-                t
-            })
-            .collect();
-        Self {
-            nodes: a.nodes.clone(),
-            values,
-            quad: a.quad.clone(),
-            dlambda: (b.lambda() - a.lambda()) / step,
-            from: a.solution.clone(),
-            to: b.solution.clone(),
-            step,
-        }
-    }
-
-    /// The tangent at any s (from the two solutions' polynomials).
-    fn at(&self, s: f64) -> [f64; 13] {
-        if let Ok(k) = self.nodes.binary_search_by(|x| x.total_cmp(&s)) {
-            return self.values[k];
-        }
-        let (mut a, mut b) = ([0.0; 13], [0.0; 13]);
-        self.from.eval_into(s, &mut a);
-        self.to.eval_into(s, &mut b);
-        let mut t = [0.0; 13];
-        for i in 0..13 {
-            t[i] = (b[i] - a[i]) / self.step;
-        }
-        t
-    }
-
-    fn cos_angle(&self, other: &Tangent, w: &[f64; 13], theta: f64) -> f64 {
-        let mut d = theta * self.dlambda * other.dlambda;
-        let mut n1 = theta * self.dlambda * self.dlambda;
-        let mut n2 = theta * other.dlambda * other.dlambda;
-        for k in 0..self.nodes.len() {
-            let (a, b) = (&self.values[k], &other.values[k]);
-            for i in 0..13 {
-                d += self.quad[k] * w[i] * a[i] * b[i];
-                n1 += self.quad[k] * w[i] * a[i] * a[i];
-                n2 += self.quad[k] * w[i] * b[i] * b[i];
-            }
-        }
-        d / (n1 * n2).sqrt()
-    }
-}
-
-/// The rod plus the pseudo-arclength condition as a second integral
-/// condition, with λ = p[FORCE] free.
-struct Arclength<'a> {
-    rod: &'a Rod,
-    anchor: &'a Cached,
-    tangent: &'a Tangent,
-    sigma: f64,
-    weights: [f64; 13],
-    theta: f64,
-}
-
-impl Problem for Arclength<'_> {
-    fn dim(&self) -> usize {
-        Rod::DIM
-    }
-    fn parameter_count(&self) -> usize {
-        Rod::PARAMETERS
-    }
-    fn boundary_count(&self) -> usize {
-        self.rod.boundary_count()
-    }
-    fn integral_count(&self) -> usize {
-        2
-    }
-    fn rhs(&self, s: f64, y: &[f64], p: &[f64], f: &mut [f64]) {
-        self.rod.rhs(s, y, p, f);
-    }
-    fn rhs_jacobian(
-        &self,
-        s: f64,
-        y: &[f64],
-        p: &[f64],
-        dfdy: DMatrixViewMut<'_, f64>,
-        dfdp: DMatrixViewMut<'_, f64>,
-    ) -> bool {
-        self.rod.rhs_jacobian(s, y, p, dfdy, dfdp)
-    }
-    fn boundary(&self, y0: &[f64], y1: &[f64], p: &[f64], g: &mut [f64]) {
-        self.rod.boundary(y0, y1, p, g);
-    }
-    fn boundary_jacobian(
-        &self,
-        y0: &[f64],
-        y1: &[f64],
-        p: &[f64],
-        dg0: DMatrixViewMut<'_, f64>,
-        dg1: DMatrixViewMut<'_, f64>,
-        dgp: DMatrixViewMut<'_, f64>,
-    ) -> bool {
-        self.rod.boundary_jacobian(y0, y1, p, dg0, dg1, dgp)
-    }
-    fn integrand(&self, s: f64, y: &[f64], y_ref: &[f64], p: &[f64], h: &mut [f64]) {
-        self.rod.integrand(s, y, y_ref, p, &mut h[..1]);
-        let (a, t) = match self.anchor.index(s) {
-            Some(k) => (self.anchor.values[k], self.tangent.values[k]),
-            None => {
-                let mut a = [0.0; 13];
-                self.anchor.solution.eval_into(s, &mut a);
-                (a, self.tangent.at(s))
-            }
-        };
-        let mut v = 0.0;
-        for i in 0..13 {
-            v += self.weights[i] * (y[i] - a[i]) * t[i];
-        }
-        let dl = p[self.anchor.param] - self.anchor.lambda();
-        h[1] = v + self.theta * dl * self.tangent.dlambda - self.sigma;
-    }
-    fn integrand_jacobian(
-        &self,
-        s: f64,
-        y: &[f64],
-        y_ref: &[f64],
-        p: &[f64],
-        mut dhdy: DMatrixViewMut<'_, f64>,
-        mut dhdp: DMatrixViewMut<'_, f64>,
-    ) -> bool {
-        self.rod
-            .integrand_jacobian(s, y, y_ref, p, dhdy.rows_mut(0, 1), dhdp.rows_mut(0, 1));
-        let t = self.tangent.at(s);
-        for i in 0..13 {
-            dhdy[(1, i)] = self.weights[i] * t[i];
-        }
-        dhdp[(1, self.anchor.param)] = self.theta * self.tangent.dlambda;
-        true
-    }
 }

@@ -1,6 +1,6 @@
 //! [`RodModel`]: the full 3D pull by collocation continuation.
 
-use crate::curve::{Fold, ForceExtension, ForcePoint};
+use crate::curve::ForceExtension;
 use crate::error::{Error, Result};
 use crate::rod::{self, PullObserver, PullRun, PullTermination, Rod};
 
@@ -85,20 +85,7 @@ impl RodModel {
     #[must_use]
     pub fn response(run: &PullRun) -> Response {
         let curve: ForceExtension = run.curve();
-        let pts = curve.points();
-        let folds = run
-            .folds
-            .iter()
-            .map(|f| Fold {
-                kind: f.kind,
-                index: f.after_point,
-                point: ForcePoint {
-                    extension: f.extension,
-                    force: f.force,
-                    parameter: pts.get(f.after_point).map_or(f64::NAN, |p| p.parameter),
-                },
-            })
-            .collect();
+        let folds = run.folds.clone();
         let loops = run.points.iter().map(|p| p.loops).collect();
         let response = Response::with_folds("rod", curve, folds).with_loops(loops);
         match run.termination {

@@ -415,18 +415,21 @@ fn continuation_with_a_free_parameter_and_an_integral_condition() {
     }
 }
 
+/// An observer that counts rejected steps.
+struct Count<'a>(&'a mut usize);
+
+impl hockle::continuation::Observer for Count<'_> {
+    fn step_rejected(&mut self, _new_ds: f64) -> ControlFlow<()> {
+        *self.0 += 1;
+        ControlFlow::Continue(())
+    }
+}
+
 #[test]
 fn angle_check_rejects_steps_and_reports() {
     // The Bratu branch turns (dλ/ds decreases from 0.957); an angle limit of
     // 1e-9 rad cannot be met once the tangent turns, so the step halves down
     // to ds_min and the run ends with AngleTooLarge, keeping its points.
-    struct Count<'a>(&'a mut usize);
-    impl hockle::continuation::Observer for Count<'_> {
-        fn step_rejected(&mut self, _new_ds: f64) -> ControlFlow<()> {
-            *self.0 += 1;
-            ControlFlow::Continue(())
-        }
-    }
     let p = Bratu { analytic: true };
     let start = Collocation::new()
         .intervals(10)
@@ -447,6 +450,40 @@ fn angle_check_rejects_steps_and_reports() {
     assert!(!b.points().is_empty());
     // 0.1 → 0.05 → … → 1e-3 is seven halvings (the last clamps to ds_min).
     assert!(rejected >= 7, "{rejected} rejections");
+}
+
+#[test]
+fn the_iterator_counts_steps_rejections_and_iterations() {
+    // Driving the Trace by hand gives the same counts as the observer of
+    // `run`: accepted steps = regular points, rejections = step_rejected
+    // calls, and at least the corrector iterations of the accepted points.
+    let p = Bratu { analytic: true };
+    let start = Collocation::new()
+        .intervals(10)
+        .solve(&p, |_s: f64| [0.0, 0.0], &[0.0])
+        .unwrap();
+    let cont = Continuation::new(0)
+        .step(0.1)
+        .step_bounds(1e-3, 0.5)
+        .max_angle(0.05)
+        .max_steps(40);
+    let mut rejected = 0;
+    let b = cont.run(&p, &start, Count(&mut rejected)).unwrap();
+    let mut trace = cont.trace(&p, &start).unwrap();
+    let pts: Vec<_> = trace.by_ref().collect();
+    assert_eq!(pts.len(), b.points().len());
+    let regular = pts
+        .iter()
+        .filter(|q| q.kind() == PointKind::Regular)
+        .count();
+    assert_eq!(trace.steps(), regular);
+    assert_eq!(trace.steps(), 40);
+    // The angle limit of 0.05 rad rejects steps where the branch turns.
+    assert!(rejected > 0);
+    assert_eq!(trace.rejected(), rejected);
+    let accepted: u64 = pts.iter().map(|q| u64::from(q.newton_iterations())).sum();
+    assert!(trace.newton_iterations() >= accepted);
+    assert!(trace.newton_iterations() > 0);
 }
 
 #[test]
@@ -492,4 +529,41 @@ fn without_branch_points_the_fold_is_the_same_with_fewer_factorisations() {
         "{:e}",
         a.dparameter_ds() - b.dparameter_ds()
     );
+}
+
+#[test]
+fn distance_is_the_arclength_norm() {
+    // Pseudo-arclength puts the first point at ⟨x₁ − x₀, τ₀⟩ = Δs, so its
+    // distance from the start is Δs / cos α, α the angle between the secant
+    // and the tangent: α = O(Δs κ) ≈ 0.01 on the Bratu branch near λ = 0,
+    // so the two agree to ~α²/2 ≈ 1e-4 relative (bound 1e-3). Scaling every
+    // weight and θ by 4 doubles the norm exactly (homogeneity), up to
+    // rounding (1e-14).
+    let p = Bratu { analytic: true };
+    let start = Collocation::new()
+        .intervals(10)
+        .solve(&p, |_s: f64| [0.0, 0.0], &[0.0])
+        .unwrap();
+    let cont = Continuation::new(0).step(0.01);
+    let pts: Vec<_> = cont.trace(&p, &start).unwrap().take(2).collect();
+    let (a, b) = (pts[0].solution(), pts[1].solution());
+    let d = cont.distance(a, b).unwrap();
+    assert!(
+        ((d - pts[1].arclength()) / d).abs() < 1e-3,
+        "{d} vs {}",
+        pts[1].arclength()
+    );
+    assert_eq!(cont.distance(a, a).unwrap(), 0.0);
+    assert_eq!(cont.distance(a, b).unwrap(), cont.distance(b, a).unwrap());
+    let heavy = Continuation::new(0)
+        .weights(&[4.0, 4.0])
+        .parameter_weight(4.0);
+    let d4 = heavy.distance(a, b).unwrap();
+    assert!((d4 / d - 2.0).abs() < 1e-14, "{}", d4 / d);
+    // A solution on another mesh is refused.
+    let other = Collocation::new()
+        .intervals(7)
+        .solve(&p, |_s: f64| [0.0, 0.0], &[0.0])
+        .unwrap();
+    assert!(cont.distance(a, &other).is_err());
 }
