@@ -35,7 +35,13 @@
 //!   amplitude ψ (tan ψ = cot r/k′): F = K − F(ψ), E = E − E(ψ) + m sin r sin ψ.
 //!   The duplication carries the R_F series to order 15 and R_D to order 11
 //!   (exact coefficients, same script), so it stops two to three steps
-//!   earlier than with DLMF's 7th-order series.
+//!   earlier than with DLMF's 7th-order series; when R_F and R_D share the
+//!   loop (E(φ)), the loop's R_D tolerance leaves R_F a spread ≤ 0.057, and
+//!   an order-11 R_F series suffices. The R_D sum is carried as one
+//!   fraction (one division instead of one per step), the series are
+//!   evaluated by Estrin's scheme, and sin r, cos r come from fdlibm's
+//!   polynomial kernels inline (≤ 0.81 ulp) rather than two libm calls,
+//!   which alone took ~15 of ~40 ns in `ellip_f`.
 //! - **sn, cn, dn, am**: u = 2jK + r with 2K as a double-double and exact
 //!   products (|r| ≤ K); |r| > K/2 is folded by the quarter-period shift
 //!   (DLMF 22.4.3) to K − |r| ∈ [0, K/2], with sn = √(1 − m₁ sd²) there. On
