@@ -33,11 +33,11 @@
 //!   cos²r + m₁ sin²r, E(r) written as three non-negative terms, and within
 //!   the last stretch before π/2 (cos²r < m₁ sin²r/4) the complementary
 //!   amplitude ψ (tan ψ = cot r/k′): F = K − F(ψ), E = E − E(ψ) + m sin r sin ψ.
-//!   The duplication carries the R_F series to order 15 and R_D to order 11
+//!   The duplication carries the R_F series to order 15 and R_D to order 10
 //!   (exact coefficients, same script), so it stops two to three steps
 //!   earlier than with DLMF's 7th-order series; when R_F and R_D share the
-//!   loop (E(φ)), the loop's R_D tolerance leaves R_F a spread ≤ 0.057, and
-//!   an order-11 R_F series suffices. The R_D sum is carried as one
+//!   loop (E(φ)), the loop's R_D tolerance leaves R_F a spread ≤ 0.0395,
+//!   and an order-10 R_F series suffices. The R_D sum is carried as one
 //!   fraction (one division instead of one per step), the series are
 //!   evaluated by Estrin's scheme, and sin r, cos r come from fdlibm's
 //!   polynomial kernels inline (≤ 0.81 ulp) rather than two libm calls,

@@ -161,16 +161,16 @@ def main():
 # (j = a2+a3+a4+a5, p = 2a2+3a3+4a4+5a5), which reproduce DLMF 19.36.1-2 at low
 # order.  Orders and tolerances: the truncation error was measured against
 # mpmath's elliprf/elliprd over random X with max|X| <= TOL (R_F order 15,
-# TOL 0.1: 1.2e-18; R_D order 11, TOL 0.05: 7.9e-18).
+# TOL 0.1: 1.2e-18; R_D order 10, TOL 0.035: 4.2e-18).
 from fractions import Fraction
 from math import comb, factorial
 
-RF_ORDER, RD_ORDER = 15, 11
+RF_ORDER, RD_ORDER = 15, 10
 # In the joint R_F/R_D loop (E(φ)) the loop runs until the R_D spread is
-# below 0.05 about the weighted mean A_D = (x + y + 3z)/5; then the spread
-# about A_F = (x + y + z)/3 is at most (5/9)(0.1)/A_F <= 0.057, where the
-# order-11 R_F series truncates at <= 7.3e-18 (measured 6.0e-18 at 0.056).
-RF_JOINT_ORDER = 11
+# below TOL_RD = 0.035 about the weighted mean A_D = (x + y + 3z)/5; then the
+# spread about A_F = (x + y + z)/3 is at most (10/9) TOL_RD / (1 - 4 TOL_RD/9)
+# = 0.0395, where the order-10 R_F series truncates at <= 1.7e-18.
+RF_JOINT_ORDER = 10
 
 
 def binom_half(j):
@@ -265,7 +265,7 @@ def carlson_rust():
     ]
     for name, order, doc in [
         ("rf_series", RF_ORDER, ""),
-        ("rf_series_joint", RF_JOINT_ORDER, f"\n/// Order {RF_JOINT_ORDER}, for the joint loop's spread ≤ 0.057."),
+        ("rf_series_joint", RF_JOINT_ORDER, f"\n/// Order {RF_JOINT_ORDER}, for the joint loop's spread ≤ 0.0395."),
     ]:
         rf = rf_terms(order)
         out += [
