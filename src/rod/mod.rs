@@ -113,7 +113,7 @@
 //! F jumps over that stretch onto a stiffer branch of tilted coils.
 //!
 //! Accuracy and cost (docs/ACCURACY.md, docs/PERFORMANCE.md): the paper's
-//! curve with its six folds in 1.5 s of CPU and 7 MB, folds converged to
+//! curve with its six folds in 2.0 s of CPU and 7 MB, folds converged to
 //! 6e-7; at θ0 = 90° the planar solutions agree with the elastica to 1e-10.
 
 mod equilibrium;
