@@ -1409,71 +1409,15 @@ mod tests {
 #[cfg(test)]
 mod timing {
     use super::*;
-
-    struct Troesch;
-    impl Problem for Troesch {
-        fn dim(&self) -> usize {
-            2
-        }
-        fn parameter_count(&self) -> usize {
-            1
-        }
-        fn boundary_count(&self) -> usize {
-            2
-        }
-        fn rhs(&self, _s: f64, y: &[f64], p: &[f64], f: &mut [f64]) {
-            f[0] = y[1];
-            f[1] = p[0] * (p[0] * y[0]).sinh();
-        }
-        fn boundary(&self, y0: &[f64], y1: &[f64], _p: &[f64], g: &mut [f64]) {
-            g[0] = y0[0];
-            g[1] = y1[0] - 1.0;
-        }
-    }
-
-    struct Big;
-    impl Problem for Big {
-        fn dim(&self) -> usize {
-            13
-        }
-        fn parameter_count(&self) -> usize {
-            1
-        }
-        fn boundary_count(&self) -> usize {
-            13
-        }
-        fn rhs(&self, _s: f64, y: &[f64], p: &[f64], f: &mut [f64]) {
-            for i in 0..13 {
-                f[i] = y[(i + 1) % 13] + 0.1 * y[i].sin() + p[0];
-            }
-        }
-        fn rhs_jacobian(
-            &self,
-            _s: f64,
-            y: &[f64],
-            _p: &[f64],
-            mut dfdy: nalgebra::DMatrixViewMut<'_, f64>,
-            mut dfdp: nalgebra::DMatrixViewMut<'_, f64>,
-        ) -> bool {
-            for i in 0..13 {
-                dfdy[(i, (i + 1) % 13)] += 1.0;
-                dfdy[(i, i)] += 0.1 * y[i].cos();
-                dfdp[(i, 0)] = 1.0;
-            }
-            true
-        }
-        fn boundary(&self, y0: &[f64], y1: &[f64], _p: &[f64], g: &mut [f64]) {
-            g[..7].copy_from_slice(&y0[..7]);
-            g[7..13].copy_from_slice(&y1[7..13]);
-        }
-    }
+    use crate::bvp::classic::{Coupled13, Troesch};
 
     #[test]
     #[ignore = "timing probe: cargo test --release --lib system::timing -- --ignored --nocapture"]
     fn big_parts() {
         let nn = 50;
         let t: Vec<f64> = (0..=nn).map(|j| j as f64 / nn as f64).collect();
-        let mut sys = System::new(&Big, t, Tableau::new(4), vec![0], 1).unwrap();
+        let big = Coupled13::new();
+        let mut sys = System::new(&big, t, Tableau::new(4), vec![0], 1).unwrap();
         let mut x = sys.zero_state();
         for (i, v) in x.y.iter_mut().enumerate() {
             *v = 0.01 * i as f64;
