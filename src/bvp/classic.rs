@@ -48,7 +48,7 @@ impl Problem for Linear {
     }
 }
 
-/// Bratu: y'' + λ e^y = 0, y(0) = y(1) = 0; p = [λ]. `analytic` selects
+/// Bratu: y'' + λ e^y = 0, y(0) = y(1) = 0; `p = [λ]`. `analytic` selects
 /// the hand-written Jacobians (otherwise finite differences).
 #[derive(Debug, Clone, Copy)]
 pub struct Bratu {
@@ -107,7 +107,7 @@ pub fn bratu_lambda(theta: f64) -> f64 {
     theta * theta / (2.0 * (theta / 4.0).cosh().powi(2))
 }
 
-/// Troesch: y'' = μ sinh(μ y), y(0) = 0, y(1) = 1; p = [μ].
+/// Troesch: y'' = μ sinh(μ y), y(0) = 0, y(1) = 1; `p = [μ]`.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Troesch;
 
@@ -131,7 +131,7 @@ impl Problem for Troesch {
     }
 }
 
-/// u'' + (pπ)² u − u² = 0, u(0) = u(1) = 0; p = [p]. The trivial branch
+/// u'' + (pπ)² u − u² = 0, u(0) = u(1) = 0; `p = [p]`. The trivial branch
 /// u = 0 has branch points exactly at p = 1, 2, 3, …
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Quadratic;
@@ -157,7 +157,7 @@ impl Problem for Quadratic {
     }
 }
 
-/// Euler buckling θ'' + P sin θ = 0, θ'(0) = θ'(1) = 0; p = [P]. Branch
+/// Euler buckling θ'' + P sin θ = 0, θ'(0) = θ'(1) = 0; `p = [P]`. Branch
 /// points at P = k²π²; the first buckled branch has P = 4 K(k)², k = sin(θ(0)/2).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Euler;
