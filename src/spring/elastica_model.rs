@@ -2,9 +2,9 @@
 
 use crate::curve::ForceExtension;
 use crate::elastica::{Branch, Trace, secondary_fold};
-use crate::error::{Error, Result};
+use crate::error::Result;
 
-use super::{Model, Response, Spring, check_target};
+use super::{Model, Response, Spring, check_samples, check_target};
 
 /// The spring held flat, as between two glass plates (the paper's
 /// introduction): the planar elastica with intrinsic curvature 2πn and
@@ -31,16 +31,11 @@ impl ElasticaModel {
     /// An elastica model sampling each branch at `samples` points.
     ///
     /// # Errors
-    /// [`Error::InvalidCount`] if `samples < 2`.
+    /// [`Error::InvalidCount`](crate::Error::InvalidCount) if `samples < 2`.
     pub fn new(samples: usize) -> Result<Self> {
-        if samples < 2 {
-            return Err(Error::InvalidCount {
-                name: "samples",
-                value: samples as u64,
-                allowed: "at least 2 points",
-            });
-        }
-        Ok(Self { samples })
+        Ok(Self {
+            samples: check_samples(samples)?,
+        })
     }
 
     /// The branches a spring of n coils can visit up to the target force:
@@ -50,7 +45,7 @@ impl ElasticaModel {
     /// out.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] for a bad target.
+    /// [`Error::InvalidArgument`](crate::Error::InvalidArgument) for a bad target.
     pub fn scaffold(&self, spring: &Spring, max_force_scaled: f64) -> Result<Vec<ForceExtension>> {
         let target = check_target(max_force_scaled)?;
         let n = spring.coils();
@@ -76,7 +71,7 @@ impl Model for ElasticaModel {
     }
 
     /// # Errors
-    /// [`Error::InvalidArgument`] for a bad target.
+    /// [`Error::InvalidArgument`](crate::Error::InvalidArgument) for a bad target.
     fn pull(&self, spring: &Spring, max_force_scaled: f64) -> Result<Response> {
         let target = check_target(max_force_scaled)?;
         let n = spring.coils();

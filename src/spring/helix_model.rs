@@ -4,7 +4,7 @@ use crate::curve::{ForceExtension, ForcePoint};
 use crate::error::{Error, Result};
 use crate::helix::Helix;
 
-use super::{Model, Response, Spring, check_target};
+use super::{Model, Response, Spring, check_samples, check_target};
 
 /// The spring as an exact helix with zero axial moment throughout
 /// ([`crate::helix`]): instant, exact for θ0 far from 90° and for isotropic
@@ -30,14 +30,9 @@ impl HelixModel {
     /// # Errors
     /// [`Error::InvalidCount`] if `samples < 2`.
     pub fn new(samples: usize) -> Result<Self> {
-        if samples < 2 {
-            return Err(Error::InvalidCount {
-                name: "samples",
-                value: samples as u64,
-                allowed: "at least 2 points",
-            });
-        }
-        Ok(Self { samples })
+        Ok(Self {
+            samples: check_samples(samples)?,
+        })
     }
 }
 

@@ -56,6 +56,18 @@ pub trait Model {
     fn pull(&self, spring: &Spring, max_force_scaled: f64) -> Result<Response>;
 }
 
+pub(crate) fn check_samples(samples: usize) -> Result<usize> {
+    if samples >= 2 {
+        Ok(samples)
+    } else {
+        Err(crate::Error::InvalidCount {
+            name: "samples",
+            value: samples as u64,
+            allowed: "at least 2 points",
+        })
+    }
+}
+
 pub(crate) fn check_target(max_force_scaled: f64) -> Result<f64> {
     if max_force_scaled.is_finite() && max_force_scaled > 0.0 {
         Ok(max_force_scaled)
