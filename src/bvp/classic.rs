@@ -9,6 +9,7 @@
 //! | [`Troesch`] | y′(0) = 4.575046140632e-2 at μ = 5 (boundary layer at μ = 10) |
 //! | [`Quadratic`] | branch points of the trivial branch at p = 1, 2, 3, … |
 //! | [`Euler`] | branch points at P = k²π²; first buckled branch P = 4K(k)² |
+//! | [`Eigen`] | λ = π², y = √(2a) sin(πs) for every amplitude a |
 //! | [`Coupled13`] | none: a 13-dimensional system of the 3D rod's size, for benches |
 
 use nalgebra::DMatrixViewMut;
@@ -192,6 +193,38 @@ impl Problem for Euler {
     fn boundary(&self, y0: &[f64], y1: &[f64], _p: &[f64], g: &mut [f64]) {
         g[0] = y0[1];
         g[1] = y1[1];
+    }
+}
+
+/// The first eigenpair as a boundary-value problem with an integral
+/// condition: y″ + λ y = 0, y(0) = y(1) = 0, ∫₀¹ y² ds = a; `p = [λ, a]`.
+/// With λ free, every amplitude a gives λ = π² and y = √(2a) sin(πs).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Eigen;
+
+impl Problem for Eigen {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn parameter_count(&self) -> usize {
+        2
+    }
+    fn boundary_count(&self) -> usize {
+        2
+    }
+    fn integral_count(&self) -> usize {
+        1
+    }
+    fn rhs(&self, _s: f64, y: &[f64], p: &[f64], f: &mut [f64]) {
+        f[0] = y[1];
+        f[1] = -p[0] * y[0];
+    }
+    fn boundary(&self, y0: &[f64], y1: &[f64], _p: &[f64], g: &mut [f64]) {
+        g[0] = y0[0];
+        g[1] = y1[0];
+    }
+    fn integrand(&self, _s: f64, y: &[f64], _r: &[f64], p: &[f64], h: &mut [f64]) {
+        h[0] = y[0] * y[0] - p[1];
     }
 }
 

@@ -1411,6 +1411,15 @@ mod timing {
     use super::*;
     use crate::bvp::classic::{Coupled13, Troesch};
 
+    /// Mean wall time of `f` over `reps` calls, in seconds.
+    fn mean_seconds(reps: u32, mut f: impl FnMut()) -> f64 {
+        let t0 = std::time::Instant::now();
+        for _ in 0..reps {
+            f();
+        }
+        t0.elapsed().as_secs_f64() / f64::from(reps)
+    }
+
     #[test]
     #[ignore = "timing probe: cargo test --release --lib system::timing -- --ignored --nocapture"]
     fn big_parts() {
@@ -1426,26 +1435,18 @@ mod timing {
         let mut r = sys.zero_residual();
         let mut d = sys.zero_state();
         let reps = 200;
-        let t0 = std::time::Instant::now();
-        for _ in 0..reps {
+        let tr = mean_seconds(reps, || {
             sys.residual(&x, &mut r).unwrap();
-        }
-        let tr = t0.elapsed().as_secs_f64() / reps as f64;
-        let t0 = std::time::Instant::now();
-        for _ in 0..reps {
+        });
+        let tf = mean_seconds(reps, || {
             sys.factor(&x).unwrap();
-        }
-        let tf = t0.elapsed().as_secs_f64() / reps as f64;
-        let t0 = std::time::Instant::now();
-        for _ in 0..reps {
+        });
+        let tc = mean_seconds(reps, || {
             sys.phase_c().unwrap();
-        }
-        let tc = t0.elapsed().as_secs_f64() / reps as f64;
-        let t0 = std::time::Instant::now();
-        for _ in 0..reps {
+        });
+        let ts = mean_seconds(reps, || {
             sys.solve(&r, &mut d).unwrap();
-        }
-        let ts = t0.elapsed().as_secs_f64() / reps as f64;
+        });
         eprintln!(
             "13-dim N=50: residual {:.1} µs, factor {:.1} µs, phase C {:.1} µs, solve {:.1} µs",
             tr * 1e6,
@@ -1470,21 +1471,15 @@ mod timing {
         let mut r = sys.zero_residual();
         let mut d = sys.zero_state();
         let reps = 2000;
-        let t0 = std::time::Instant::now();
-        for _ in 0..reps {
+        let tr = mean_seconds(reps, || {
             sys.residual(&x, &mut r).unwrap();
-        }
-        let tr = t0.elapsed().as_secs_f64() / reps as f64;
-        let t0 = std::time::Instant::now();
-        for _ in 0..reps {
+        });
+        let tf = mean_seconds(reps, || {
             sys.factor(&x).unwrap();
-        }
-        let tf = t0.elapsed().as_secs_f64() / reps as f64;
-        let t0 = std::time::Instant::now();
-        for _ in 0..reps {
+        });
+        let ts = mean_seconds(reps, || {
             sys.solve(&r, &mut d).unwrap();
-        }
-        let ts = t0.elapsed().as_secs_f64() / reps as f64;
+        });
         eprintln!(
             "residual {:.1} µs, factor {:.1} µs, solve {:.1} µs",
             tr * 1e6,

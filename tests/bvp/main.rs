@@ -182,43 +182,13 @@ fn troesch_mu5_uniform_and_mu10_adaptive() {
     assert!(e10 < 3.6e-7, "mu=10: {e10:e} ({sol10})");
 }
 
-/// y'' + p y = 0, y(0) = y(1) = 0, ∫₀¹ y² ds = ½ with p free: the first
-/// eigenpair p = π², y = ±sin(πs).
-struct Eigen;
-
-impl hockle::bvp::Problem for Eigen {
-    fn dim(&self) -> usize {
-        2
-    }
-    fn parameter_count(&self) -> usize {
-        1
-    }
-    fn boundary_count(&self) -> usize {
-        2
-    }
-    fn integral_count(&self) -> usize {
-        1
-    }
-    fn rhs(&self, _s: f64, y: &[f64], p: &[f64], f: &mut [f64]) {
-        f[0] = y[1];
-        f[1] = -p[0] * y[0];
-    }
-    fn boundary(&self, y0: &[f64], y1: &[f64], _p: &[f64], g: &mut [f64]) {
-        g[0] = y0[0];
-        g[1] = y1[0];
-    }
-    fn integrand(&self, _s: f64, y: &[f64], _r: &[f64], _p: &[f64], h: &mut [f64]) {
-        h[0] = y[0] * y[0] - 0.5;
-    }
-}
-
 #[test]
 fn free_parameter_with_integral_condition() {
     let guess = |s: f64| [4.0 * s * (1.0 - s), 4.0 - 8.0 * s];
     let sol = Collocation::new()
         .intervals(20)
         .free_parameters(&[0])
-        .solve(&Eigen, guess, &[8.0])
+        .solve(&problems::Eigen, guess, &[8.0, 0.5])
         .unwrap();
     let pi2 = std::f64::consts::PI.powi(2);
     // Eigenvalue error of Gauss collocation O(h^(2m)) ≈ (π/20)^8·C ≈ 4e-7·C,

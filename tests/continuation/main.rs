@@ -234,10 +234,16 @@ impl Problem for Faulty {
     }
 }
 
-fn faulty_start(p: &Faulty) -> hockle::bvp::Solution {
-    Collocation::new()
+/// Continues `p` from its rest state at λ = 0 in steps of 0.1.
+fn run_faulty(p: &Faulty) -> hockle::continuation::Branch {
+    let start = Collocation::new()
         .intervals(10)
         .solve(p, |_s: f64| [0.0, 0.0], &[0.0])
+        .unwrap();
+    Continuation::new(0)
+        .step(0.1)
+        .step_bounds(1e-6, 0.5)
+        .run(p, &start, ())
         .unwrap()
 }
 
@@ -247,12 +253,7 @@ fn nan_right_hand_side_ends_the_run_and_keeps_the_points() {
         nan_above: 1.0,
         singular_above: f64::INFINITY,
     };
-    let start = faulty_start(&p);
-    let b = Continuation::new(0)
-        .step(0.1)
-        .step_bounds(1e-6, 0.5)
-        .run(&p, &start, ())
-        .unwrap();
+    let b = run_faulty(&p);
     assert!(
         matches!(b.termination(), Termination::NonFinite(_)),
         "{}",
@@ -270,12 +271,7 @@ fn singular_jacobian_ends_the_run_and_keeps_the_points() {
         nan_above: f64::INFINITY,
         singular_above: 0.5,
     };
-    let start = faulty_start(&p);
-    let b = Continuation::new(0)
-        .step(0.1)
-        .step_bounds(1e-6, 0.5)
-        .run(&p, &start, ())
-        .unwrap();
+    let b = run_faulty(&p);
     assert!(
         matches!(b.termination(), Termination::Singular(_)),
         "{}",
@@ -358,42 +354,12 @@ fn observer_stop_and_iterator() {
     assert_eq!(Termination::Stopped.to_string(), "stopped by the observer");
 }
 
-/// y'' + p₀ y = 0, y(0) = y(1) = 0, ∫₀¹ y² ds = p₁: p₀ is the solver's free
-/// parameter (the eigenvalue), p₁ the continuation parameter (amplitude).
-struct EigenAmplitude;
-
-impl Problem for EigenAmplitude {
-    fn dim(&self) -> usize {
-        2
-    }
-    fn parameter_count(&self) -> usize {
-        2
-    }
-    fn boundary_count(&self) -> usize {
-        2
-    }
-    fn integral_count(&self) -> usize {
-        1
-    }
-    fn rhs(&self, _s: f64, y: &[f64], p: &[f64], f: &mut [f64]) {
-        f[0] = y[1];
-        f[1] = -p[0] * y[0];
-    }
-    fn boundary(&self, y0: &[f64], y1: &[f64], _p: &[f64], g: &mut [f64]) {
-        g[0] = y0[0];
-        g[1] = y1[0];
-    }
-    fn integrand(&self, _s: f64, y: &[f64], _r: &[f64], p: &[f64], h: &mut [f64]) {
-        h[0] = y[0] * y[0] - p[1];
-    }
-}
-
 #[test]
 fn continuation_with_a_free_parameter_and_an_integral_condition() {
     let solver = Collocation::new().intervals(20).free_parameters(&[0]);
     let start = solver
         .solve(
-            &EigenAmplitude,
+            &problems::Eigen,
             |s: f64| [(std::f64::consts::PI * s).sin(), 0.0],
             &[9.0, 0.5],
         )
@@ -402,7 +368,7 @@ fn continuation_with_a_free_parameter_and_an_integral_condition() {
         .solver(solver)
         .step(0.1)
         .stop_at(2.0)
-        .run(&EigenAmplitude, &start, ())
+        .run(&problems::Eigen, &start, ())
         .unwrap();
     assert_eq!(b.termination(), &Termination::ParameterValue(2.0));
     let pi = std::f64::consts::PI;
