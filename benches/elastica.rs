@@ -2,8 +2,9 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use hockle::Stiffness;
 use hockle::elastica::{Branch, Elastica, Trace, bifurcation};
-use hockle::helix::{Helix, Stiffness};
+use hockle::helix::Helix;
 
 fn bench(c: &mut Criterion) {
     for k in [0.1, 0.5, 0.9, 0.99] {

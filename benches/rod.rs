@@ -9,7 +9,12 @@ use hockle::bvp::Collocation;
 use hockle::rod::{Pull, Rod};
 
 fn rod() -> Rod {
-    Rod::nikolai(4, 89.8_f64.to_radians(), 10.0, 0.05).expect("valid rod")
+    Rod::new(
+        4,
+        89.8_f64.to_radians(),
+        hockle::Stiffness::nikolai(10.0, 0.05).unwrap(),
+    )
+    .expect("valid rod")
 }
 
 /// One Newton solve from the unstressed helix at F = 20 (48 intervals,
@@ -32,9 +37,9 @@ fn solve(c: &mut Criterion) {
 fn cascade(c: &mut Criterion) {
     let mut g = c.benchmark_group("rod_pull");
     g.sample_size(10);
-    let pull = Pull::new(rod());
+    let pull = Pull::new(rod(), hockle::Target::Force(3.0));
     g.bench_function("cascade_n4_to_3_default", |b| {
-        b.iter(|| black_box(pull.run(()).folds.len()))
+        b.iter(|| black_box(pull.run(()).map(|r| r.folds().len())))
     });
     g.finish();
 }

@@ -13,7 +13,7 @@
 
 use std::time::{Duration, Instant};
 
-use hockle::helix::Stiffness;
+use hockle::Stiffness;
 use hockle::spring::{ElasticaModel, HelixModel, Model, Response, RodModel, Spring};
 
 fn timed(model: &dyn Model, spring: &Spring, target: f64) -> (Response, Duration) {
@@ -54,10 +54,11 @@ fn main() {
     println!("|---|---|---|---|---|---|");
     for (name, spring) in springs {
         let (rod, rod_time) = timed(&RodModel::default(), &spring, target);
-        let note = rod
-            .stopped_early()
-            .map(|r| format!(" (stopped: {r})"))
-            .unwrap_or_default();
+        let note = if rod.reached_target() {
+            String::new()
+        } else {
+            format!(" (stopped: {})", rod.termination())
+        };
         println!(
             "| {name} | rod{note} | {:.0} ms | {} | reference | reference |",
             rod_time.as_secs_f64() * 1e3,

@@ -13,37 +13,39 @@ use std::error::Error;
 use std::ops::ControlFlow;
 use std::path::PathBuf;
 
+use hockle::continuation::{Point, PointKind};
 use hockle::nalgebra::{Matrix2, SymmetricEigen, Vector2, Vector3};
-use hockle::rod::{Equilibrium, Fold, Pull, PullObserver, PullPoint, Rod};
+use hockle::rod::{Equilibrium, Pull, Rod};
+use hockle::{Stiffness, Target};
 use plotters::prelude::*;
 
 /// Collects the shapes: a few points on the way up, and every fold.
 struct Collect {
+    rod: Rod,
     marks: Vec<f64>,
     shapes: Vec<(String, Equilibrium)>,
+    last_dl: f64,
 }
 
-impl PullObserver for Collect {
-    fn point(&mut self, e: &Equilibrium, p: &PullPoint) -> ControlFlow<()> {
+impl Collect {
+    fn point(&mut self, p: &Point) -> ControlFlow<()> {
+        let e = Equilibrium::new(self.rod, p.solution().clone()).expect("a rod solution");
+        if p.kind() == PointKind::Fold {
+            let what = if self.last_dl > 0.0 { "max" } else { "min" };
+            self.shapes.push((
+                format!("{what} fold, F/((2πn)²B) = {:.3}", e.force_scaled()),
+                e,
+            ));
+            return ControlFlow::Continue(());
+        }
+        self.last_dl = p.dparameter_ds();
         if let Some(&m) = self.marks.first()
-            && p.force_scaled >= m
+            && e.force_scaled() >= m
         {
             self.marks.remove(0);
             self.shapes
-                .push((format!("F/(2πn)² = {:.3}", p.force_scaled), e.clone()));
+                .push((format!("F/((2πn)²B) = {:.3}", e.force_scaled()), e));
         }
-        ControlFlow::Continue(())
-    }
-
-    fn fold(&mut self, e: &Equilibrium, f: &Fold) -> ControlFlow<()> {
-        let what = match f.kind {
-            hockle::rod::FoldKind::MaxForce | hockle::rod::FoldKind::MaxExtension => "max",
-            hockle::rod::FoldKind::MinForce | hockle::rod::FoldKind::MinExtension => "min",
-        };
-        self.shapes.push((
-            format!("{what} fold, F/(2πn)² = {:.3}", e.force_scaled()),
-            e.clone(),
-        ));
         ControlFlow::Continue(())
     }
 }
@@ -58,24 +60,28 @@ fn main() -> Result<(), Box<dyn Error>> {
         }
     }
     std::fs::create_dir_all(&out)?;
-    let rod = Rod::nikolai(4, 89.8_f64.to_radians(), 10.0, 0.05)?;
+    let rod = Rod::new(4, 89.8_f64.to_radians(), Stiffness::nikolai(10.0, 0.05)?)?;
     let mut collect = Collect {
+        rod,
         marks: vec![0.0, 0.006, 0.3, 1.99],
         shapes: Vec::new(),
+        last_dl: 0.0,
     };
-    let run = Pull::new(rod).to_force_scaled(2.0).run_with(&mut collect);
+    let run = Pull::new(rod, Target::Force(2.0)).run(|p: &Point| collect.point(p))?;
     println!("{run}");
     let mut shapes = collect.shapes;
     // Order along the curve: the marks come first on the way up, the folds
     // in order; the last point closes the series.
     shapes.sort_by(|a, b| {
         let ia = run
-            .points
+            .curve()
+            .points()
             .iter()
             .position(|p| p.extension >= a.1.extension())
             .unwrap_or(0);
         let ib = run
-            .points
+            .curve()
+            .points()
             .iter()
             .position(|p| p.extension >= b.1.extension())
             .unwrap_or(0);

@@ -14,7 +14,7 @@ use std::error::Error;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use hockle::helix::Stiffness;
+use hockle::Stiffness;
 use hockle::spring::{HelixModel, Model, Response, RodModel, Spring};
 use plotters::prelude::*;
 
@@ -38,9 +38,11 @@ fn pull(theta0_degrees: f64, a_over_b: f64, with_helix: bool) -> Result<Curve, B
         rod.pop_outs().len(),
         rod.curve().len(),
         start.elapsed().as_secs_f64() * 1e3,
-        rod.stopped_early()
-            .map(|r| format!(" (stopped: {r})"))
-            .unwrap_or_default()
+        if rod.reached_target() {
+            String::new()
+        } else {
+            format!(" (stopped: {})", rod.termination())
+        }
     );
     let helix = if with_helix {
         Some(HelixModel::new(400)?.pull(&spring, MAX_FORCE_SCALED)?)

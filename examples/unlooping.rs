@@ -1,252 +1,277 @@
 //! The main job: pull the paper's spring (n = 4, θ0 = 89.8°, A/B = 10,
-//! ν = 0.05) from rest to F/(2πn)² = 3 and watch it lose its loops.
+//! ν = 0.05) from rest to F/((2πn)²B) = 3 and watch it lose its loops.
 //!
 //! ```text
 //! cargo run --release --example unlooping [-- --out DIR] [--intervals N]
 //! ```
 //!
-//! Writes `unlooping.csv` (one row per continuation point, in order) and
-//! `unlooping.svg` (the 3D curve, the elastica branches it visits, the folds)
-//! into DIR (default `target/hockle/`).
+//! Written on the `spring` scene: the 3D rod answers the spring, the
+//! elastica model gives the branches it visits. Writes `unlooping.csv` (one
+//! row per continuation point, in order) and `unlooping.svg` (the 3D curve,
+//! the elastica branches, the folds) into DIR (default
+//! `$CARGO_TARGET_DIR/hockle`, else `target/hockle` under the crate).
 
 use std::error::Error;
+use std::fmt::Write as _;
 use std::io::Write;
 use std::ops::ControlFlow;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use hockle::ForceExtension;
-use hockle::elastica::{Branch, Trace};
-use hockle::rod::{Equilibrium, FoldKind, Pull, PullPoint, PullRun, Rod};
-use plotters::prelude::*;
+use hockle::continuation::Point;
+use hockle::spring::{ElasticaModel, RodModel, Spring, Target};
+use hockle::{FoldKind, ForceExtension};
 
-const N: u32 = 4;
 const MAX_FORCE_SCALED: f64 = 3.0;
 
 fn main() -> Result<(), Box<dyn Error>> {
-    let mut out = PathBuf::from("target/hockle");
-    let mut intervals = None;
+    let mut out = std::env::var_os("CARGO_TARGET_DIR")
+        .map_or_else(
+            || Path::new(env!("CARGO_MANIFEST_DIR")).join("target"),
+            PathBuf::from,
+        )
+        .join("hockle");
+    let mut model = RodModel::default();
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {
             "--out" => out = PathBuf::from(args.next().ok_or("--out needs a directory")?),
-            "--intervals" => intervals = Some(args.next().ok_or("--intervals needs N")?.parse()?),
+            "--intervals" => {
+                model = model.intervals(args.next().ok_or("--intervals needs N")?.parse()?)
+            }
             other => return Err(format!("unknown argument {other}").into()),
         }
     }
     std::fs::create_dir_all(&out)?;
 
-    let rod = Rod::nikolai(N, 89.8_f64.to_radians(), 10.0, 0.05)?;
-    eprintln!("pulling {rod} to F/(2πn)² = {MAX_FORCE_SCALED}");
-    let mut pull = Pull::new(rod).to_force_scaled(MAX_FORCE_SCALED);
-    if let Some(n) = intervals {
-        pull = pull.intervals(n);
-    }
+    let spring = Spring::paper();
+    let scale = spring.force_scale();
+    eprintln!("pulling the {spring} to F/((2πn)²B) = {MAX_FORCE_SCALED}");
     let start = Instant::now();
     let mut count = 0usize;
-    let run = pull.run(|_: &Equilibrium, p: &PullPoint| {
+    let response = model.pull_observed(&spring, Target::Force(MAX_FORCE_SCALED), |p: &Point| {
         count += 1;
         if count % 20 == 0 {
-            let done = (p.force_scaled / MAX_FORCE_SCALED).clamp(0.0, 1.0);
+            let f = p.parameter() / scale;
+            let done = (f / MAX_FORCE_SCALED).clamp(0.0, 1.0);
             eprint!(
-                "\r  step {count:5}  Δz = {:.4}  F/(2πn)² = {:.4}  loops {}  [{:<30}] {:.1} s ",
-                p.extension,
-                p.force_scaled,
-                p.loops,
+                "\r  step {count:5}  F/((2πn)²B) = {f:.4}  [{:<30}] {:.1} s ",
                 "#".repeat((30.0 * done) as usize),
                 start.elapsed().as_secs_f64()
             );
         }
         ControlFlow::Continue(())
-    });
+    })?;
+    let elapsed = start.elapsed();
     eprintln!();
+    let scaffold = ElasticaModel::default().scaffold(&spring, MAX_FORCE_SCALED)?;
 
-    // The elastica branches the curve visits: the primary υ-branch and the
-    // secondary υ-branches j = 3, 2, 1 (hockle::elastica).
-    let trace = Trace::new().points(400).max_force_scaled(MAX_FORCE_SCALED);
-    let mut branches = vec![(4, trace.run(N, Branch::Upsilon)?)];
-    for j in (1..N).rev() {
-        branches.push((j, trace.secondary(N, j)?));
+    println!("{response} in {elapsed:.2?}");
+    let s = spring.scale();
+    println!("pop-outs (maximum-force fold → minimum-force fold):");
+    for (i, p) in response.pop_outs().iter().enumerate() {
+        println!(
+            "  {}: Δz {:.6} → {:.6}, F/((2πn)²B) {:.6} → {:.6}",
+            i + 1,
+            p.max.point.extension,
+            p.min.point.extension,
+            p.max.point.force_scaled(s),
+            p.min.point.force_scaled(s)
+        );
+    }
+    println!("stretches between pop-outs and the elastica branch nearest to each:");
+    for (stretch, near) in response
+        .stretches()
+        .iter()
+        .zip(response.match_branches(&scaffold))
+    {
+        let loops = stretch.loops.map_or("?".to_string(), |l| l.to_string());
+        match near.first() {
+            Some(b) => println!(
+                "  points {:4}..{:4}: {loops} loops, nearest {} (rms {:.1e}, largest {:.1e})",
+                stretch.range.start, stretch.range.end, b.label, b.rms_distance, b.max_distance
+            ),
+            None => println!(
+                "  points {:4}..{:4}: {loops} loops",
+                stretch.range.start, stretch.range.end
+            ),
+        }
+    }
+    match response.loops_lost() {
+        Some(l) => println!("loops lost: {l}"),
+        None => println!("loops lost: not defined (a stretch without a loop count)"),
     }
 
-    summary(&run, &branches);
-    write_csv(&run, &out.join("unlooping.csv"))?;
-    plot(&run, &branches, &out.join("unlooping.svg"))?;
-    println!(
-        "wrote {} and {}",
-        out.join("unlooping.csv").display(),
-        out.join("unlooping.svg").display()
-    );
+    let csv = out.join("unlooping.csv");
+    let svg = out.join("unlooping.svg");
+    write_csv(&response, &csv)?;
+    std::fs::write(&svg, plot(&response, &scaffold))?;
+    println!("wrote {} and {}", csv.display(), svg.display());
     Ok(())
 }
 
-/// Distance in the plot's plane (Δz, F/(2πn)²) from a point to a polyline.
-fn distance(curve: &ForceExtension, x: f64, y: f64) -> f64 {
-    let scale = curve.force_scale();
-    let pts: Vec<(f64, f64)> = curve
-        .points()
-        .iter()
-        .map(|p| (p.extension, p.force / scale))
-        .collect();
-    pts.windows(2)
-        .map(|w| {
-            let ((x0, y0), (x1, y1)) = (w[0], w[1]);
-            let (dx, dy) = (x1 - x0, y1 - y0);
-            let l2 = dx * dx + dy * dy;
-            let t = if l2 > 0.0 {
-                (((x - x0) * dx + (y - y0) * dy) / l2).clamp(0.0, 1.0)
-            } else {
-                0.0
-            };
-            ((x0 + t * dx - x).powi(2) + (y0 + t * dy - y).powi(2)).sqrt()
-        })
-        .fold(f64::INFINITY, f64::min)
-}
-
-fn summary(run: &PullRun, branches: &[(u32, ForceExtension)]) {
-    println!("{run}");
-    println!("pop-outs (maximum-force fold → minimum-force fold):");
-    for (i, (a, b)) in run.pop_outs().iter().enumerate() {
-        println!(
-            "  {}: Δz {:.6} → {:.6}, F/(2πn)² {:.6} → {:.6}",
-            i + 1,
-            a.point.extension,
-            b.point.extension,
-            a.point.force_scaled(N),
-            b.point.force_scaled(N)
-        );
-    }
-    println!("stretches and the elastica branch nearest to their near-planar part:");
-    for (i, s) in run.stretches().into_iter().enumerate() {
-        // Stretches that start at a maximum-force fold are the 3D excursions.
-        if i % 2 == 1 {
-            println!(
-                "  points {:4}..={:4}: 3D excursion (pop-out), planarity ≥ {:.1e}",
-                s.first, s.last, s.planarity
-            );
-            continue;
-        }
-        // The near-planar part: points within 3× the stretch's best planarity.
-        let pts: Vec<&PullPoint> = run.points[s.first..=s.last]
-            .iter()
-            .filter(|p| p.planarity <= (3.0 * s.planarity).max(1e-3) && p.force_scaled > 0.05)
-            .collect();
-        let best = branches
-            .iter()
-            .map(|(j, c)| {
-                let d = pts
-                    .iter()
-                    .map(|p| distance(c, p.extension, p.force_scaled))
-                    .fold(0.0, f64::max);
-                (*j, d)
-            })
-            .min_by(|a, b| a.1.total_cmp(&b.1));
-        match best {
-            Some((j, d)) if !pts.is_empty() => println!(
-                "  points {:4}..={:4}: {} loops, nearest branch j = {j} (largest distance {d:.2e} over {} near-planar points)",
-                s.first,
-                s.last,
-                s.loops,
-                pts.len()
-            ),
-            _ => println!(
-                "  points {:4}..={:4}: {} loops (no near-planar point)",
-                s.first, s.last, s.loops
-            ),
-        }
-    }
-    println!(
-        "loops lost: {}, steps: {} ({} rejected), Newton iterations: {}, mesh: {} intervals, run time {:.2?}",
-        run.loops_lost(),
-        run.steps,
-        run.rejected,
-        run.newton_iterations,
-        run.intervals,
-        run.elapsed
-    );
-}
-
-fn write_csv(run: &PullRun, path: &std::path::Path) -> std::io::Result<()> {
+fn write_csv(response: &hockle::spring::Response, path: &Path) -> std::io::Result<()> {
     let mut f = std::io::BufWriter::new(std::fs::File::create(path)?);
-    writeln!(f, "extension,force,force_scaled,arclength,loops,planarity")?;
-    for p in &run.points {
+    writeln!(f, "extension,force,force_scaled,arclength,loops")?;
+    let scale = response.curve().scale();
+    for (p, l) in response.curve().points().iter().zip(response.loops()) {
+        let loops = l.map(|l| l.to_string()).unwrap_or_default();
         writeln!(
             f,
-            "{:e},{:e},{:e},{:e},{},{:e}",
-            p.extension, p.force, p.force_scaled, p.arclength, p.loops, p.planarity
+            "{:e},{:e},{:e},{:e},{loops}",
+            p.extension,
+            p.force,
+            p.force_scaled(scale),
+            p.parameter
         )?;
     }
     f.flush()
 }
 
-fn plot(
-    run: &PullRun,
-    branches: &[(u32, ForceExtension)],
-    path: &std::path::Path,
-) -> Result<(), Box<dyn Error>> {
-    let root = SVGBackend::new(path, (900, 640)).into_drawing_area();
-    root.fill(&WHITE)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(
-            "Cascade unlooping: n = 4, θ0 = 89.8°, A/B = 10, ν = 0.05",
-            ("sans-serif", 22),
-        )
-        .margin(12)
-        .x_label_area_size(40)
-        .y_label_area_size(55)
-        .build_cartesian_2d(0.0..1.0, 0.0..MAX_FORCE_SCALED)?;
-    chart
-        .configure_mesh()
-        .x_desc("extension Δz")
-        .y_desc("force F/(2πn)²B")
-        .draw()?;
-    let colours = [BLUE, GREEN, MAGENTA, CYAN];
-    for (i, (j, c)) in branches.iter().enumerate() {
-        let scale = c.force_scale();
-        let colour = colours[i % colours.len()];
-        chart
-            .draw_series(LineSeries::new(
-                c.points()
-                    .iter()
-                    .map(|p| (p.extension, p.force / scale))
-                    .filter(|p| p.1 <= MAX_FORCE_SCALED),
-                colour.stroke_width(1),
-            ))?
-            .label(if *j == N {
-                "primary υ elastica (j = 4)".to_string()
-            } else {
-                format!("secondary υ elastica j = {j}")
-            })
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour));
+/// The Okabe–Ito palette: distinct for colour-blind readers, legible on white.
+const PALETTE: [&str; 4] = ["#0072B2", "#009E73", "#CC79A7", "#E69F00"];
+
+/// The figure as SVG, written directly so that every coordinate keeps three
+/// decimals of a pixel (no staircase on the steep stretches).
+fn plot(response: &hockle::spring::Response, scaffold: &[ForceExtension]) -> String {
+    let (w, h) = (900.0, 640.0);
+    let (left, right, top, bottom) = (70.0, 20.0, 50.0, 90.0);
+    let (pw, ph) = (w - left - right, h - top - bottom);
+    let x = |dz: f64| left + dz * pw;
+    let y = |f: f64| top + (1.0 - f / MAX_FORCE_SCALED) * ph;
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="sans-serif">"#
+    );
+    let _ = writeln!(s, r#"<rect width="{w}" height="{h}" fill="white"/>"#);
+    let _ = writeln!(
+        s,
+        r#"<text x="{}" y="28" font-size="20" text-anchor="middle">Cascade unlooping: n = 4, θ0 = 89.8°, A/B = 10, ν = 0.05</text>"#,
+        w / 2.0
+    );
+    for i in 0..=10 {
+        let t = f64::from(i) / 10.0;
+        let f = t * MAX_FORCE_SCALED;
+        let _ = writeln!(
+            s,
+            r##"<line x1="{:.3}" y1="{top}" x2="{:.3}" y2="{:.3}" stroke="#e6e6e6"/><text x="{:.3}" y="{:.3}" font-size="12" text-anchor="middle">{t:.1}</text>"##,
+            x(t),
+            x(t),
+            top + ph,
+            x(t),
+            top + ph + 16.0
+        );
+        let _ = writeln!(
+            s,
+            r##"<line x1="{left}" y1="{:.3}" x2="{:.3}" y2="{:.3}" stroke="#e6e6e6"/><text x="{:.3}" y="{:.3}" font-size="12" text-anchor="end">{f:.1}</text>"##,
+            y(f),
+            left + pw,
+            y(f),
+            left - 6.0,
+            y(f) + 4.0
+        );
     }
-    chart
-        .draw_series(LineSeries::new(
-            run.points.iter().map(|p| (p.extension, p.force_scaled)),
-            BLACK.stroke_width(3),
-        ))?
-        .label("3D rod (this run)")
-        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(3)));
-    chart
-        .draw_series(run.folds.iter().map(|f| {
-            let colour = if f.kind == FoldKind::MaxForce {
-                RED
-            } else {
-                BLACK
-            };
-            Circle::new(
-                (f.point.extension, f.point.force_scaled(N)),
-                5,
-                colour.filled(),
-            )
-        }))?
-        .label("folds (red: maximum force, black: minimum)")
-        .legend(|(x, y)| Circle::new((x + 10, y), 4, RED.filled()));
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .draw()?;
-    root.present()?;
-    Ok(())
+    let _ = writeln!(
+        s,
+        r#"<rect x="{left}" y="{top}" width="{pw}" height="{ph}" fill="none" stroke="black"/>"#
+    );
+    let _ = writeln!(
+        s,
+        r#"<text x="{:.3}" y="{:.3}" font-size="14" text-anchor="middle">extension Δz</text>"#,
+        left + pw / 2.0,
+        top + ph + 36.0
+    );
+    let _ = writeln!(
+        s,
+        r#"<text transform="translate(18 {:.3}) rotate(-90)" font-size="14" text-anchor="middle">force F/((2πn)²B)</text>"#,
+        top + ph / 2.0
+    );
+    let _ = writeln!(
+        s,
+        r##"<text x="{left}" y="{:.3}" font-size="11" fill="#444">F is the physical tension F = dU/dΔz: half the force of the paper's Section 3 formulas.</text>"##,
+        h - 14.0
+    );
+    let polyline = |pts: &mut dyn Iterator<Item = (f64, f64)>, colour: &str, width: f64| {
+        let mut d = String::new();
+        for (dz, f) in pts.filter(|p| p.1 <= MAX_FORCE_SCALED && p.1 >= 0.0) {
+            let _ = write!(d, "{:.3},{:.3} ", x(dz), y(f));
+        }
+        format!(
+            r#"<polyline points="{d}" fill="none" stroke="{colour}" stroke-width="{width}" stroke-linejoin="round"/>"#
+        )
+    };
+    let mut legend = Vec::new();
+    for (i, c) in scaffold.iter().enumerate() {
+        let colour = PALETTE[i % PALETTE.len()];
+        let scale = c.scale();
+        s += &polyline(
+            &mut c
+                .points()
+                .iter()
+                .map(|p| (p.extension, p.force_scaled(scale))),
+            colour,
+            1.5,
+        );
+        s.push('\n');
+        legend.push((format!("elastica: {}", c.label()), colour, "line"));
+    }
+    let scale = response.curve().scale();
+    s += &polyline(
+        &mut response
+            .curve()
+            .points()
+            .iter()
+            .map(|p| (p.extension, p.force_scaled(scale))),
+        "black",
+        2.5,
+    );
+    s.push('\n');
+    legend.push(("3D rod (this run)".to_string(), "black", "line"));
+    for f in response.folds() {
+        let colour = match f.kind {
+            FoldKind::MaxForce => "#D55E00",
+            FoldKind::MinForce => "#56B4E9",
+            FoldKind::MaxExtension | FoldKind::MinExtension => continue,
+        };
+        let _ = writeln!(
+            s,
+            r#"<circle cx="{:.3}" cy="{:.3}" r="5" fill="{colour}" stroke="black" stroke-width="0.8"/>"#,
+            x(f.point.extension),
+            y(f.point.force_scaled(scale))
+        );
+    }
+    legend.push(("maximum-force fold".to_string(), "#D55E00", "dot"));
+    legend.push(("minimum-force fold".to_string(), "#56B4E9", "dot"));
+    let (lx, ly) = (left + 12.0, top + 12.0);
+    let _ = writeln!(
+        s,
+        r#"<rect x="{lx}" y="{ly}" width="330" height="{}" fill="white" fill-opacity="0.9" stroke="black"/>"#,
+        18.0 * legend.len() as f64 + 8.0
+    );
+    for (i, (label, colour, kind)) in legend.iter().enumerate() {
+        let yy = ly + 16.0 + 18.0 * i as f64;
+        if *kind == "line" {
+            let _ = write!(
+                s,
+                r#"<line x1="{}" y1="{yy}" x2="{}" y2="{yy}" stroke="{colour}" stroke-width="2.5"/>"#,
+                lx + 8.0,
+                lx + 32.0
+            );
+        } else {
+            let _ = write!(
+                s,
+                r#"<circle cx="{}" cy="{yy}" r="5" fill="{colour}" stroke="black" stroke-width="0.8"/>"#,
+                lx + 20.0
+            );
+        }
+        let _ = writeln!(
+            s,
+            r#"<text x="{}" y="{}" font-size="12">{label}</text>"#,
+            lx + 40.0,
+            yy + 4.0
+        );
+    }
+    s += "</svg>\n";
+    s
 }

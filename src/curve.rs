@@ -24,39 +24,114 @@ pub struct ForcePoint {
 }
 
 impl ForcePoint {
-    /// The force divided by (2π `scale_coils`)², the scale of the paper's
-    /// plots (see [`ForceExtension::force_scale`]).
+    /// The force divided by the [`ForceScale`] (2πn)²B, the scale of the
+    /// paper's plots.
     ///
     /// ```
-    /// use hockle::ForcePoint;
+    /// use hockle::{ForcePoint, ForceScale};
     /// let p = ForcePoint { extension: 0.5, force: 2.0, parameter: 0.0 };
-    /// let scale = (2.0 * std::f64::consts::PI * 4.0).powi(2);
-    /// assert_eq!(p.force_scaled(4), 2.0 / scale);
+    /// let scale = ForceScale::new(4, 2.0)?; // n = 4, B = 2
+    /// assert_eq!(p.force_scaled(scale), 2.0 / ((2.0 * std::f64::consts::PI * 4.0).powi(2) * 2.0));
+    /// # Ok::<(), hockle::Error>(())
     /// ```
     #[must_use]
-    pub fn force_scaled(&self, scale_coils: u32) -> f64 {
-        self.force / force_scale(scale_coils)
+    pub fn force_scaled(&self, scale: ForceScale) -> f64 {
+        self.force / scale.value()
     }
 }
 
-/// (2πn)², the force scale of the paper's plots.
-pub(crate) fn force_scale(coils: u32) -> f64 {
-    let two_pi_n = 2.0 * std::f64::consts::PI * f64::from(coils);
-    two_pi_n * two_pi_n
-}
-
-/// A force–extension curve: equilibria in order, with the scale of the
-/// paper's plots.
+/// The paper's force scale (2πn)²·B: the force that bends a straight rod of
+/// bending stiffness B into n full turns per unit length, and the unit of
+/// every force axis in its figures (F/((2πn)²B)).
 ///
-/// `force_scaled = force / (2π n_scale)²`, where `n_scale` is the number of
-/// coils used for scaling (the paper scales every figure by n = 4).
+/// Defined once here for every model. A spring's own scale is
+/// [`Spring::scale`](crate::spring::Spring::scale); the elastica is solved
+/// with B = 1 ([`ForceScale::of_coils`]).
+/// The equations of every model are invariant when A, B, C and F are
+/// scaled together, so curves in this scale do not depend on the units of
+/// stiffness.
 ///
 /// ```
-/// use hockle::{ForceExtension, ForcePoint};
-/// let mut curve = ForceExtension::new("demo", "k", 4)?;
+/// use hockle::ForceScale;
+/// let s = ForceScale::of_coils(4)?; // n = 4, B = 1
+/// assert!((s.value() - (8.0 * std::f64::consts::PI).powi(2)).abs() < 1e-12);
+/// # Ok::<(), hockle::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct ForceScale {
+    coils: u32,
+    bending: f64,
+}
+
+impl ForceScale {
+    /// The scale (2πn)²B of `coils` coils with bending stiffness `bending` (B).
+    ///
+    /// # Errors
+    /// [`Error::InvalidCount`] if `coils` is 0; [`Error::InvalidArgument`] if
+    /// B is not finite and positive, or (2πn)²B overflows.
+    pub fn new(coils: u32, bending: f64) -> Result<Self> {
+        if coils == 0 {
+            return Err(Error::InvalidCount {
+                name: "coils",
+                value: 0,
+                allowed: "at least 1 coil",
+            });
+        }
+        let scale = Self { coils, bending };
+        if !(bending > 0.0 && scale.value().is_finite() && scale.value() > 0.0) {
+            return Err(Error::InvalidArgument {
+                name: "bending stiffness B",
+                value: bending,
+                allowed: "finite and positive, with (2πn)²B finite and positive",
+            });
+        }
+        Ok(scale)
+    }
+
+    /// (2πn)² with B = 1, the units of the elastica.
+    ///
+    /// # Errors
+    /// [`Error::InvalidCount`] if `coils` is 0.
+    pub fn of_coils(coils: u32) -> Result<Self> {
+        Self::new(coils, 1.0)
+    }
+
+    /// The number of coils n.
+    #[must_use]
+    pub fn coils(&self) -> u32 {
+        self.coils
+    }
+
+    /// The bending stiffness B.
+    #[must_use]
+    pub fn bending(&self) -> f64 {
+        self.bending
+    }
+
+    /// (2πn)²B.
+    #[must_use]
+    pub fn value(&self) -> f64 {
+        let two_pi_n = 2.0 * std::f64::consts::PI * f64::from(self.coils);
+        two_pi_n * two_pi_n * self.bending
+    }
+}
+
+impl core::fmt::Display for ForceScale {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "(2π·{})²·{}", self.coils, self.bending)
+    }
+}
+
+/// A force–extension curve: equilibria in order, with the [`ForceScale`]
+/// (2πn)²B of the paper's plots.
+///
+/// ```
+/// use hockle::{ForceExtension, ForcePoint, ForceScale};
+/// let mut curve = ForceExtension::new("demo", "k", ForceScale::new(4, 2.0)?);
 /// curve.push(ForcePoint { extension: 0.1, force: 2.0, parameter: 0.5 });
 /// assert_eq!(curve.len(), 1);
-/// let scale = (2.0 * std::f64::consts::PI * 4.0).powi(2);
+/// let scale = (2.0 * std::f64::consts::PI * 4.0).powi(2) * 2.0;
 /// assert_eq!(curve.force_scaled(0), Some(2.0 / scale));
 /// # Ok::<(), hockle::Error>(())
 /// ```
@@ -65,34 +140,25 @@ pub(crate) fn force_scale(coils: u32) -> f64 {
 pub struct ForceExtension {
     label: String,
     parameter_name: String,
-    scale_coils: u32,
+    scale: ForceScale,
     points: Vec<ForcePoint>,
 }
 
 impl ForceExtension {
     /// An empty curve named `label`, whose points carry `parameter_name` as
-    /// their parameter, scaled by `(2π scale_coils)²`.
-    ///
-    /// # Errors
-    /// [`Error::InvalidCount`] if `scale_coils` is 0.
+    /// their parameter, with forces scaled by `scale`.
+    #[must_use]
     pub fn new(
         label: impl Into<String>,
         parameter_name: impl Into<String>,
-        scale_coils: u32,
-    ) -> Result<Self> {
-        if scale_coils == 0 {
-            return Err(Error::InvalidCount {
-                name: "scale_coils",
-                value: 0,
-                allowed: "at least 1 coil",
-            });
-        }
-        Ok(Self {
+        scale: ForceScale,
+    ) -> Self {
+        Self {
             label: label.into(),
             parameter_name: parameter_name.into(),
-            scale_coils,
+            scale,
             points: Vec::new(),
-        })
+        }
     }
 
     /// Appends a point at the end of the curve.
@@ -112,16 +178,16 @@ impl ForceExtension {
         &self.parameter_name
     }
 
-    /// The number of coils n whose (2πn)² scales [`Self::force_scaled`].
+    /// The force scale (2πn)²B of [`Self::force_scaled`].
     #[must_use]
-    pub fn scale_coils(&self) -> u32 {
-        self.scale_coils
+    pub fn scale(&self) -> ForceScale {
+        self.scale
     }
 
-    /// The scale (2πn)² that divides the force in the paper's plots.
+    /// (2πn)²B, the value that divides the force in the paper's plots.
     #[must_use]
     pub fn force_scale(&self) -> f64 {
-        force_scale(self.scale_coils)
+        self.scale.value()
     }
 
     /// The points, in order.
@@ -193,11 +259,11 @@ impl core::fmt::Display for ForceExtension {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         write!(
             f,
-            "{} ({} points over {}, force scaled by (2π·{})²)",
+            "{} ({} points over {}, force scaled by {})",
             self.label,
             self.points.len(),
             self.parameter_name,
-            self.scale_coils
+            self.scale
         )
     }
 }
@@ -319,7 +385,7 @@ mod tests {
 
     #[test]
     fn csv_round_trips_every_number() {
-        let mut c = ForceExtension::new("t", "k", 1).unwrap();
+        let mut c = ForceExtension::new("t", "k", ForceScale::of_coils(1).unwrap());
         c.push(ForcePoint {
             extension: 0.1,
             force: 1.0 / 3.0,
@@ -341,13 +407,13 @@ mod tests {
     }
 
     #[test]
-    fn zero_scale_coils_is_an_error() {
+    fn zero_coils_or_a_bad_b_is_an_error() {
         assert!(matches!(
-            ForceExtension::new("t", "k", 0),
-            Err(Error::InvalidCount {
-                name: "scale_coils",
-                ..
-            })
+            ForceScale::new(0, 1.0),
+            Err(Error::InvalidCount { name: "coils", .. })
         ));
+        for b in [0.0, -1.0, f64::NAN, f64::INFINITY, 1e308] {
+            assert!(ForceScale::new(u32::MAX, b).is_err(), "B = {b}");
+        }
     }
 }

@@ -170,4 +170,25 @@ pub enum Error {
         kind: &'static str,
     },
     // ----- rod, spring ---------------------------------------------------
+    /// A pull's target cannot be reached: a non-finite value, a force of 0
+    /// or an extension equal to the rest extension (the rest state itself),
+    /// or an extension outside (−1, 1) (|Δz| = 1 is the straight rod).
+    #[error(
+        "the target {target} cannot be reached: forces must be finite and non-zero, \
+         extensions in (-1, 1) and different from the rest extension {rest_extension}"
+    )]
+    UnreachableTarget {
+        /// The target given.
+        target: crate::Target,
+        /// The extension of the unloaded spring.
+        rest_extension: f64,
+    },
+    /// A model was asked about a spring outside what it assumes.
+    #[error("the {model} model cannot answer this: {assumption}")]
+    OutsideModel {
+        /// The model's name.
+        model: &'static str,
+        /// What the model assumes, and what to use instead.
+        assumption: &'static str,
+    },
 }

@@ -29,7 +29,7 @@
 //! | [`spring::Response`] | a model's answer: the curve, folds, pop-outs, stretches, jumps |
 //! | [`ForceExtension`] | a force–extension curve, the one output type of every model |
 //! | [`elastica::Elastica`] | one planar equilibrium; [`elastica::Trace`] a whole branch |
-//! | [`helix::Helix`], [`helix::Stiffness`] | the exact-helix response |
+//! | [`helix::Helix`], [`Stiffness`] | the exact-helix response, and the stiffnesses A, B, C |
 //! | [`rod::Rod`], [`rod::Pull`] | the 3D rod as a boundary-value problem, and its pull driver |
 //! | [`bvp::Problem`], [`bvp::Collocation`] | any two-point BVP, and the collocation solver |
 //! | [`continuation::Continuation`] | pseudo-arclength continuation of a [`bvp::Problem`] |
@@ -79,13 +79,17 @@ pub mod curve;
 pub mod elastica;
 pub mod error;
 pub mod helix;
+pub mod load;
 pub mod rod;
 pub mod special;
 pub mod spring;
+mod stiffness;
 
 pub(crate) mod linalg;
 
-pub use curve::{Fold, FoldKind, ForceExtension, ForcePoint};
+pub use curve::{Fold, FoldKind, ForceExtension, ForcePoint, ForceScale};
+pub use load::{Control, Target};
+pub use stiffness::Stiffness;
 
 /// The README's code, compiled and run as a doctest.
 #[doc = include_str!("../README.md")]

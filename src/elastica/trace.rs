@@ -7,7 +7,7 @@ use super::family::Family;
 use super::secondary::secondary_fold;
 use super::solution::{Arm, Branch, Elastica, check_j, check_n};
 use super::symmetric::primary;
-use crate::curve::{ForceExtension, ForcePoint};
+use crate::curve::{ForceExtension, ForcePoint, ForceScale};
 use crate::error::{Error, Result};
 use crate::special::Modulus;
 
@@ -120,7 +120,8 @@ impl Trace {
     pub fn run(&self, n: u32, branch: Branch) -> Result<ForceExtension> {
         let (sc, fmax) = self.check(n)?;
         let path = Path::new(n, branch)?;
-        let mut curve = ForceExtension::new(format!("{branch}, n = {n}"), "k", sc)?;
+        let mut curve =
+            ForceExtension::new(format!("{branch}, n = {n}"), "k", ForceScale::of_coils(sc)?);
         curve.extend(path.sample(fmax, self.points, self.max_force_scaled)?);
         Ok(curve)
     }
@@ -141,7 +142,11 @@ impl Trace {
         let mut a = lower.sample(fmax, half.max(2), self.max_force_scaled)?;
         let b = upper.sample(fmax, (self.points - half).max(2), self.max_force_scaled)?;
         a.reverse();
-        let mut curve = ForceExtension::new(format!("secondary j = {j}, n = {n}"), "k", sc)?;
+        let mut curve = ForceExtension::new(
+            format!("secondary j = {j}, n = {n}"),
+            "k",
+            ForceScale::of_coils(sc)?,
+        );
         curve.extend(a);
         // the fold point is on both arms: keep it once
         curve.extend(b.into_iter().skip(1));

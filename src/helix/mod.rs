@@ -56,139 +56,9 @@
 
 use core::f64::consts::PI;
 
-use crate::curve::{ForceExtension, ForcePoint};
+use crate::curve::{ForceExtension, ForcePoint, ForceScale};
 use crate::error::{Error, Result};
-
-/// Bending stiffnesses A (about d1) and B (about d2) and torsional stiffness C.
-///
-/// Validated once at construction (every value finite and positive); the
-/// helix formulas use only B and C (u1 = 0 means no bending about d1).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize),
-    serde(try_from = "StiffnessParts", into = "StiffnessParts")
-)]
-pub struct Stiffness {
-    a: f64,
-    b: f64,
-    c: f64,
-}
-
-/// The serialized form of [`Stiffness`], validated by [`Stiffness::new`]
-/// on the way in.
-#[cfg(feature = "serde")]
-#[derive(serde::Serialize, serde::Deserialize)]
-struct StiffnessParts {
-    a: f64,
-    b: f64,
-    c: f64,
-}
-
-#[cfg(feature = "serde")]
-impl From<Stiffness> for StiffnessParts {
-    fn from(s: Stiffness) -> Self {
-        Self {
-            a: s.a,
-            b: s.b,
-            c: s.c,
-        }
-    }
-}
-
-#[cfg(feature = "serde")]
-impl TryFrom<StiffnessParts> for Stiffness {
-    type Error = Error;
-    fn try_from(p: StiffnessParts) -> Result<Self> {
-        Stiffness::new(p.a, p.b, p.c)
-    }
-}
-
-impl Stiffness {
-    /// The stiffnesses (A, B, C).
-    ///
-    /// # Errors
-    /// [`Error::InvalidArgument`] if any value is not finite and positive.
-    ///
-    /// ```
-    /// let s = hockle::helix::Stiffness::new(10.0, 1.0, 1.7)?;
-    /// assert_eq!(s.c(), 1.7);
-    /// # Ok::<(), hockle::Error>(())
-    /// ```
-    pub fn new(a: f64, b: f64, c: f64) -> Result<Self> {
-        for (name, v) in [("a", a), ("b", b), ("c", c)] {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(Error::InvalidArgument {
-                    name,
-                    value: v,
-                    allowed: "a finite positive stiffness",
-                });
-            }
-        }
-        Ok(Self { a, b, c })
-    }
-
-    /// The paper's choice: B = 1, A = `a_over_b`, and C on the Nikolai bound
-    ///
-    /// ```text
-    /// C = 2AB / ((1 + ν)(A + B))
-    /// ```
-    ///
-    /// (equality holds for elliptical cross-sections). C/B = 1.7316 at
-    /// A/B = 10, ν = 0.05, as the paper states.
-    ///
-    /// # Errors
-    /// [`Error::InvalidArgument`] if `a_over_b` is not finite and positive or
-    /// ν is not in (−1, 0.5].
-    ///
-    /// ```
-    /// let s = hockle::helix::Stiffness::nikolai(10.0, 0.05)?;
-    /// assert!((s.c() - 1.7316).abs() < 5e-5);
-    /// # Ok::<(), hockle::Error>(())
-    /// ```
-    pub fn nikolai(a_over_b: f64, nu: f64) -> Result<Self> {
-        if !(a_over_b.is_finite() && a_over_b > 0.0) {
-            return Err(Error::InvalidArgument {
-                name: "a_over_b",
-                value: a_over_b,
-                allowed: "a finite positive ratio A/B",
-            });
-        }
-        if !(nu > -1.0 && nu <= 0.5) {
-            return Err(Error::InvalidArgument {
-                name: "nu",
-                value: nu,
-                allowed: "a Poisson ratio in (-1, 0.5]",
-            });
-        }
-        let c = 2.0 * a_over_b / ((1.0 + nu) * (a_over_b + 1.0));
-        Self::new(a_over_b, 1.0, c)
-    }
-
-    /// Bending stiffness A about d1.
-    #[must_use]
-    pub fn a(&self) -> f64 {
-        self.a
-    }
-
-    /// Bending stiffness B about d2 (the axis of intrinsic curvature).
-    #[must_use]
-    pub fn b(&self) -> f64 {
-        self.b
-    }
-
-    /// Torsional stiffness C.
-    #[must_use]
-    pub fn c(&self) -> f64 {
-        self.c
-    }
-}
-
-impl core::fmt::Display for Stiffness {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        write!(f, "A = {}, B = {}, C = {}", self.a, self.b, self.c)
-    }
-}
+use crate::stiffness::Stiffness;
 
 /// A unit-length helical spring of `n` turns at helix angle θ0 that stays an
 /// exact helix with zero axial moment while pulled (see the [module docs](self)).
@@ -212,7 +82,8 @@ impl Helix {
     /// in (0, π/2].
     ///
     /// ```
-    /// use hockle::helix::{Helix, Stiffness};
+    /// use hockle::Stiffness;
+    /// use hockle::helix::Helix;
     /// let h = Helix::new(4, 88f64.to_radians(), Stiffness::nikolai(10.0, 0.05)?)?;
     /// assert_eq!(h.force(88f64.to_radians())?, 0.0);
     /// # Ok::<(), hockle::Error>(())
@@ -275,7 +146,7 @@ impl Helix {
 
     /// (P, Q) of the module docs.
     fn p_q(&self, theta: f64) -> (f64, f64) {
-        let (b, c) = (self.stiffness.b, self.stiffness.c);
+        let (b, c) = (self.stiffness.b(), self.stiffness.c());
         let (s, co) = theta.sin_cos();
         let (s0, c0) = self.theta0.sin_cos();
         (b * s * s0 + c * co * c0, b * s * s + c * co * co)
@@ -296,7 +167,8 @@ impl Helix {
     /// [`Error::InvalidArgument`] if θ is not in (0, π).
     ///
     /// ```
-    /// use hockle::helix::{Helix, Stiffness};
+    /// use hockle::Stiffness;
+    /// use hockle::helix::Helix;
     /// let h = Helix::new(4, 1.0, Stiffness::new(10.0, 1.0, 1.5)?)?;
     /// assert!(h.force(0.9)? > 0.0 && h.force(1.1)? < 0.0);
     /// # Ok::<(), hockle::Error>(())
@@ -305,17 +177,18 @@ impl Helix {
         Self::check(theta)?;
         let (p, q) = self.p_q(theta);
         let r0 = self.rho0();
-        let bc = self.stiffness.b * self.stiffness.c;
+        let bc = self.stiffness.b() * self.stiffness.c();
         Ok(-bc * r0 * r0 * p * (theta - self.theta0).sin() / (theta.sin() * q * q))
     }
 
-    /// [`Self::force`] divided by (2πn)², the scale of the paper's plots.
+    /// [`Self::force`] divided by (2πn)²B, the scale of the paper's plots
+    /// ([`crate::ForceScale`]).
     ///
     /// # Errors
     /// As [`Self::force`].
     pub fn force_scaled(&self, theta: f64) -> Result<f64> {
         let r0 = self.rho0();
-        Ok(self.force(theta)? / (r0 * r0))
+        Ok(self.force(theta)? / (r0 * r0) / self.stiffness.b())
     }
 
     /// Extension Δz = cos θ (unit length).
@@ -334,7 +207,8 @@ impl Helix {
     /// [`Error::InvalidArgument`] if θ is not in (0, π).
     ///
     /// ```
-    /// use hockle::helix::{Helix, Stiffness};
+    /// use hockle::Stiffness;
+    /// use hockle::helix::Helix;
     /// let h = Helix::new(2, 1.2, Stiffness::new(1.0, 1.0, 1.0)?)?;
     /// let r0 = 1.2f64.sin() / (4.0 * std::f64::consts::PI);
     /// assert!((h.radius(1.2)? - r0).abs() < 1e-16);
@@ -360,7 +234,8 @@ impl Helix {
     /// (minimised over ρ). [`Self::force`] is dU/dΔz.
     ///
     /// ```
-    /// use hockle::helix::{Helix, Stiffness};
+    /// use hockle::Stiffness;
+    /// use hockle::helix::Helix;
     /// let h = Helix::new(3, 1.0, Stiffness::new(2.0, 1.0, 1.5)?)?;
     /// let (t, d) = (0.7, 1e-6);
     /// let fd = (h.energy(t + d)? - h.energy(t - d)?) / ((t + d).cos() - (t - d).cos());
@@ -377,14 +252,15 @@ impl Helix {
         let (s0, c0) = self.theta0.sin_cos();
         let dk = rho * s - r0 * s0;
         let dt = rho * c - r0 * c0;
-        Ok(0.5 * (self.stiffness.b * dk * dk + self.stiffness.c * dt * dt))
+        Ok(0.5 * (self.stiffness.b() * dk * dk + self.stiffness.c() * dt * dt))
     }
 
     /// Spring constant dF/dΔz at the unstressed state:
     /// (2πn)² B C / (sin²θ0 (B sin²θ0 + C cos²θ0)).
     ///
     /// ```
-    /// use hockle::helix::{Helix, Stiffness};
+    /// use hockle::Stiffness;
+    /// use hockle::helix::Helix;
     /// let h = Helix::new(4, 1.2, Stiffness::nikolai(10.0, 0.05)?)?;
     /// let t = 1.2 - 1e-7;
     /// let slope = h.force(t)? / (h.extension(t)? - h.extension(1.2)?);
@@ -394,7 +270,7 @@ impl Helix {
     #[must_use]
     pub fn spring_constant(&self) -> f64 {
         let (s0, c0) = self.theta0.sin_cos();
-        let (b, c) = (self.stiffness.b, self.stiffness.c);
+        let (b, c) = (self.stiffness.b(), self.stiffness.c());
         let r0 = self.rho0();
         r0 * r0 * b * c / (s0 * s0 * (b * s0 * s0 + c * c0 * c0))
     }
@@ -407,7 +283,8 @@ impl Helix {
     /// [`Error::InvalidCount`] if `samples` < 2.
     ///
     /// ```
-    /// use hockle::helix::{Helix, Stiffness};
+    /// use hockle::Stiffness;
+    /// use hockle::helix::Helix;
     /// let h = Helix::new(4, 1.0, Stiffness::nikolai(10.0, 0.05)?)?;
     /// let c = h.curve(50)?;
     /// assert_eq!(c.len(), 50);
@@ -442,8 +319,8 @@ impl Helix {
         let mut curve = ForceExtension::new(
             format!("helix n={} θ0={:.4}°", self.coils, self.theta0.to_degrees()),
             "theta",
-            self.coils,
-        )?;
+            ForceScale::new(self.coils, self.stiffness.b())?,
+        );
         for i in 0..samples {
             let theta = if i == 0 {
                 self.theta0

@@ -15,7 +15,7 @@ use crate::error::{Error, Result};
 /// | output | meaning |
 /// |---|---|
 /// | [`force`](Self::force) | F_z, the physical tension (units B/L²) |
-/// | [`force_scaled`](Self::force_scaled) | F_z/(2πn)², the paper's plotting scale |
+/// | [`force_scaled`](Self::force_scaled) | F_z/((2πn)²B), the paper's plotting scale |
 /// | [`extension`](Self::extension) | Δz = z(1) |
 /// | [`centreline`](Self::centreline), [`frame`](Self::frame) | r(s) and (d1, d2, d3)(s) at any s |
 /// | [`strains`](Self::strains), [`curvature`](Self::curvature), [`twist`](Self::twist) | u(s), √(u1² + u2²), u3 |
@@ -79,11 +79,11 @@ impl Equilibrium {
         self.solution.at_mesh(0)[9]
     }
 
-    /// F_z / (2πn)², the scale of the paper's figures.
+    /// F_z / ((2πn)²B), the scale of the paper's figures
+    /// ([`Rod::scale`]).
     #[must_use]
     pub fn force_scaled(&self) -> f64 {
-        let k = 2.0 * PI * f64::from(self.rod.coils());
-        self.force() / (k * k)
+        self.force() / self.rod.scale().value()
     }
 
     /// The extension Δz = z(1) (end-to-end distance along the force per
@@ -231,14 +231,19 @@ impl Equilibrium {
         measure::turning(&self.samples()).turns
     }
 
-    /// The number of loops: how many times the tangent, projected onto the
-    /// plane of [`Self::turning_number`], passes the force direction (or, when
-    /// the force is normal to that plane as for the unstressed helix, the
-    /// direction perpendicular to the mean end tangent). n for the unstressed
-    /// helix, j for a planar j-loop υ-shape whatever the direction of its end
-    /// tangents; it changes by one during each pop-out.
+    /// The number of loops: the net number of times the tangent, projected
+    /// onto the plane of [`Self::turning_number`], passes the force direction
+    /// (or, when the force is normal to that plane as for the unstressed
+    /// helix, the direction perpendicular to the mean end tangent), passes
+    /// counted with their sign. n for the unstressed helix, j for a planar
+    /// j-loop υ-shape whatever the direction of its end tangents; it drops by
+    /// one across each pop-out.
+    ///
+    /// `None` where the count is not defined: the tangent leaves that plane
+    /// somewhere (its projection is shorter than ½, i.e. it stands within
+    /// 60° of the plane's normal), as in the 3D excursion of a pop-out.
     #[must_use]
-    pub fn loops(&self) -> u32 {
+    pub fn loops(&self) -> Option<u32> {
         measure::turning(&self.samples()).loops
     }
 
@@ -263,15 +268,6 @@ impl Equilibrium {
         total / (2.0 * PI)
     }
 
-    /// (loops, planarity) from one set of samples (the pull records both).
-    pub(crate) fn loops_and_planarity(&self) -> (u32, f64) {
-        let samples = self.samples();
-        (
-            measure::turning(&samples).loops,
-            measure::planarity(&samples),
-        )
-    }
-
     /// max | |q(t_j)| − 1 | over the mesh points t_j. Gauss collocation is
     /// a symplectic Runge–Kutta method and conserves the quadratic invariant
     /// |q|² of q′ = ½ q ⊗ (0, u) exactly at the mesh points, so this measures
@@ -293,7 +289,7 @@ impl core::fmt::Display for Equilibrium {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         write!(
             f,
-            "rod equilibrium: F = {:.6} (F/(2πn)² = {:.6}), Δz = {:.6}, {} intervals",
+            "rod equilibrium: F = {:.6} (F/((2πn)²B) = {:.6}), Δz = {:.6}, {} intervals",
             self.force(),
             self.force_scaled(),
             self.extension(),

@@ -39,8 +39,7 @@ pub(crate) fn integrate<G: FnMut(f64) -> f64>(breaks: &[f64], sub: usize, mut g:
 pub(crate) fn strains(rod: &Rod, theta0: f64, y: &[f64; 13]) -> Vector3<f64> {
     let r = rot(&y[3..7]);
     let m = r.transpose() * Vector3::new(y[10], y[11], y[12]);
-    Vector3::new(m.x / rod.a, m.y / rod.b, m.z / rod.c)
-        + Rod::intrinsic_strains_at(rod.coils, theta0)
+    Vector3::new(m.x / rod.a, m.y / rod.b, m.z / rod.c) + rod.intrinsic_strains_at(theta0)
 }
 
 /// Elastic energy ½ ∫ A(u1 − u10)² + B(u2 − u20)² + C(u3 − u30)² ds.
@@ -75,9 +74,17 @@ pub(crate) fn planarity(samples: &[(f64, [f64; 13])]) -> f64 {
         .fold(0.0, f64::max)
 }
 
+/// Smallest length of the tangent projected on the plane of
+/// [`turning`] at which the loop count is still defined: below it the
+/// tangent stands within 60° of the plane's normal somewhere, the shape is
+/// out of plane there (during a pop-out), and counting turns of the
+/// projection would count that excursion's wobble.
+pub(crate) const LOOP_PROJECTION_MIN: f64 = 0.5;
+
 /// The tangent's turning in the plane it leaves least: the turning number
-/// (net turn / 2π, continuous) and the loop count (how many times the
-/// projected tangent passes a reference direction, an integer).
+/// (net turn / 2π, continuous) and the loop count (net signed passes of the
+/// projected tangent through a reference direction, an integer; `None`
+/// where the tangent leaves the plane, |P d3| < [`LOOP_PROJECTION_MIN`]).
 ///
 /// ν is the eigenvector of the smallest eigenvalue of ∫ d3 d3ᵀ ds (k for the
 /// unstressed helix, the normal of the plane for a planar elastica). The
@@ -85,9 +92,11 @@ pub(crate) fn planarity(samples: &[(f64, [f64; 13])]) -> f64 {
 /// in the plane (a planar j-loop υ-shape turns its tangent through the force
 /// direction exactly j times, wherever its ends point), otherwise the
 /// in-plane direction perpendicular to the mean end tangent (the helix: n).
+/// Passes are counted with their sign, so a wobble back and forth across
+/// the reference (an inflection near it) counts zero.
 pub(crate) struct Turning {
     pub(crate) turns: f64,
-    pub(crate) loops: u32,
+    pub(crate) loops: Option<u32>,
 }
 
 pub(crate) fn turning(samples: &[(f64, [f64; 13])]) -> Turning {
@@ -109,10 +118,14 @@ pub(crate) fn turning(samples: &[(f64, [f64; 13])]) -> Turning {
     };
     let e1 = (seed - nu * nu.dot(&seed)).normalize();
     let e2 = nu.cross(&e1);
-    let angles: Vec<f64> = tangents
+    let projected: Vec<(f64, f64)> = tangents
         .iter()
-        .map(|d3| d3.dot(&e2).atan2(d3.dot(&e1)))
+        .map(|d3| (d3.dot(&e1), d3.dot(&e2)))
         .collect();
+    let in_plane = projected
+        .iter()
+        .all(|(x, y)| x.hypot(*y) >= LOOP_PROJECTION_MIN);
+    let angles: Vec<f64> = projected.iter().map(|(x, y)| y.atan2(*x)).collect();
     let kp = Vector3::z() - nu * nu.z;
     let reference = if kp.norm() > 0.5 {
         kp.dot(&e2).atan2(kp.dot(&e1))
@@ -123,17 +136,18 @@ pub(crate) fn turning(samples: &[(f64, [f64; 13])]) -> Turning {
     };
     let wrap = |d: f64| d - 2.0 * PI * (d / (2.0 * PI)).round();
     let mut total = 0.0;
-    let mut crossings = 0_i64;
+    let mut passes = 0.0;
     let mut unwrapped = wrap(angles[0] - reference);
     for w in angles.windows(2) {
         let d = wrap(w[1] - w[0]);
         total += d;
         let next = unwrapped + d;
-        crossings += ((next / (2.0 * PI)).floor() - (unwrapped / (2.0 * PI)).floor()).abs() as i64;
+        passes += (next / (2.0 * PI)).floor() - (unwrapped / (2.0 * PI)).floor();
         unwrapped = next;
     }
     Turning {
         turns: (total / (2.0 * PI)).abs(),
-        loops: u32::try_from(crossings).unwrap_or(u32::MAX),
+        // |passes| ≤ samples, so the conversion cannot saturate in practice.
+        loops: in_plane.then(|| passes.abs().min(f64::from(u32::MAX)) as u32),
     }
 }

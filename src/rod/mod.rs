@@ -8,23 +8,22 @@
 //! |---|---|
 //! | [`Rod`] | the problem: n coils, helix angle θ0, stiffnesses, [`Control`]; implements [`crate::bvp::Problem`] with analytic Jacobians |
 //! | [`Equilibrium`] | one solution with its outputs on demand (force, extension, frame, strains, energy, planarity, loop count, \|q\| drift) |
-//! | [`Pull`] | the driver: pseudo-arclength from the unstressed helix under force or extension control, folds located |
-//! | [`PullRun`] | every point in order, the [`Fold`]s, the [`Stretch`]es with their loop counts, the [`PullTermination`] |
-//! | [`PullObserver`] | progress hooks (closures and `()` implement it) |
+//! | [`Pull`] | the driver: pseudo-arclength from rest to a [`crate::Target`] (force or extension), folds located; [`Start`] to drive it step by step |
+//! | [`PullRun`] | the curve in order, the located [`crate::Fold`]s, a loop count per point, the continuation's [`crate::continuation::Termination`] |
 //!
 //! ```no_run
 //! use hockle::rod::{Pull, Rod};
+//! use hockle::{Stiffness, Target};
 //! // The paper's Fig. spring: three pop-outs, 4 → 3 → 2 → 1 loops, ~2 s.
-//! let rod = Rod::nikolai(4, 89.8_f64.to_radians(), 10.0, 0.05)?;
-//! let run = Pull::new(rod).to_force_scaled(3.0).run(());
-//! assert_eq!(run.pop_outs().len(), 3);
-//! assert_eq!(run.loops_lost(), 3);
-//! for (max, min) in run.pop_outs() {
+//! let rod = Rod::new(4, 89.8_f64.to_radians(), Stiffness::nikolai(10.0, 0.05)?)?;
+//! let run = Pull::new(rod, Target::Force(3.0)).run(())?;
+//! assert!(run.reached_target());
+//! for fold in run.folds() {
 //!     println!(
-//!         "pop-out at Δz = {:.4}, F/(2πn)² = {:.4} → {:.4}",
-//!         max.point.extension,
-//!         max.point.force_scaled(4),
-//!         min.point.force_scaled(4)
+//!         "{} at Δz = {:.4}, F/((2πn)²B) = {:.4}",
+//!         fold.kind,
+//!         fold.point.extension,
+//!         fold.point.force_scaled(rod.scale())
 //!     );
 //! }
 //! # Ok::<(), hockle::Error>(())
@@ -126,33 +125,13 @@ use core::f64::consts::{FRAC_PI_2, PI};
 
 use nalgebra::Vector3;
 
+use crate::curve::ForceScale;
 use crate::error::{Error, Result};
-use crate::helix::Stiffness;
+use crate::load::Control;
+use crate::stiffness::Stiffness;
 
-pub use crate::curve::{Fold, FoldKind};
 pub use equilibrium::Equilibrium;
-pub use pull::{Pull, PullObserver, PullPoint, PullRun, PullTermination, Stretch};
-
-/// Which end load is prescribed.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub enum Control {
-    /// The force F_z = p[[`Rod::FORCE`]] is prescribed (dead load).
-    #[default]
-    Force,
-    /// The extension z(1) = p[[`Rod::EXTENSION`]] is prescribed (hard
-    /// device); F_z is an unknown.
-    Extension,
-}
-
-impl core::fmt::Display for Control {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        match self {
-            Control::Force => f.write_str("force control"),
-            Control::Extension => f.write_str("extension control"),
-        }
-    }
-}
+pub use pull::{Pull, PullRun, Start};
 
 /// A helical spring of n coils as a 3D anisotropic Kirchhoff rod with
 /// zero-moment ends: the boundary-value problem of the module docs.
@@ -162,9 +141,10 @@ impl core::fmt::Display for Control {
 /// ```
 /// use hockle::bvp::Problem;
 /// use hockle::rod::Rod;
-/// let rod = Rod::nikolai(4, 89.8_f64.to_radians(), 10.0, 0.05)?;
+/// use hockle::Stiffness;
+/// let rod = Rod::new(4, 89.8_f64.to_radians(), Stiffness::nikolai(10.0, 0.05)?)?;
 /// assert_eq!(rod.dim(), 13);
-/// assert!((rod.torsional_stiffness() - 1.7316).abs() < 5e-5); // the paper's C/B
+/// assert!((rod.stiffness().c() - 1.7316).abs() < 5e-5); // the paper's C/B
 /// # Ok::<(), hockle::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -175,6 +155,8 @@ pub struct Rod {
     a: f64,
     b: f64,
     c: f64,
+    /// u0 − 2πn (0, sin θ0, cos θ0): zero for a helical spring.
+    strain_offset: Vector3<f64>,
     control: Control,
 }
 
@@ -190,68 +172,66 @@ impl Rod {
     /// Index of the helix angle θ0 in the parameter vector.
     pub const THETA0: usize = 2;
 
-    /// A spring of `coils` turns, helix angle `theta0` (radians, between the
-    /// tangent and the axis) and stiffnesses A (about d1), B (about d2),
-    /// C (torsion), under force control.
+    /// A spring of `coils` turns at helix angle `helix_angle` (radians,
+    /// between the tangent and the axis) with `stiffness` (A about d1, B
+    /// about d2, C torsion) and the intrinsic strains of its unstressed
+    /// helix, under force control.
     ///
     /// # Errors
     /// [`Error::InvalidCount`] if `coils` is 0; [`Error::InvalidArgument`] if
-    /// θ0 ∉ (0, π/2] or a stiffness is not finite and positive.
-    pub fn new(coils: u32, theta0: f64, a: f64, b: f64, c: f64) -> Result<Self> {
-        if coils == 0 {
-            return Err(Error::InvalidCount {
-                name: "coils",
-                value: 0,
-                allowed: "at least 1 coil",
-            });
-        }
-        if !(theta0 > 0.0 && theta0 <= FRAC_PI_2) {
+    /// the helix angle is not in (0, π/2] or (2πn)²B overflows.
+    pub fn new(coils: u32, helix_angle: f64, stiffness: Stiffness) -> Result<Self> {
+        ForceScale::new(coils, stiffness.b())?;
+        if !(helix_angle > 0.0 && helix_angle <= FRAC_PI_2) {
             return Err(Error::InvalidArgument {
-                name: "theta0",
-                value: theta0,
+                name: "helix_angle",
+                value: helix_angle,
                 allowed: "a helix angle in (0, π/2] radians",
             });
         }
-        for (name, v) in [("a", a), ("b", b), ("c", c)] {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(Error::InvalidArgument {
-                    name,
-                    value: v,
-                    allowed: "a finite positive stiffness",
-                });
-            }
-        }
         Ok(Self {
             coils,
-            theta0,
-            a,
-            b,
-            c,
+            theta0: helix_angle,
+            a: stiffness.a(),
+            b: stiffness.b(),
+            c: stiffness.c(),
+            strain_offset: Vector3::zeros(),
             control: Control::Force,
         })
     }
 
-    /// The paper's choice: B = 1, A = `a_over_b`, and C at the Nikolai bound
-    /// C = 2AB/((1 + ν)(A + B)) ([`Stiffness::nikolai`]).
+    /// The same rod with intrinsic strains u0 = (u10, u20, u30) instead of
+    /// those of its helix (for instance a strip whose natural curvature is
+    /// not about d2, or a natural twist). The pull still starts from the
+    /// helix of n coils at θ0, relaxed at zero load to these strains by
+    /// Newton's method.
     ///
     /// # Errors
-    /// As [`Rod::new`] and [`Stiffness::nikolai`].
-    pub fn nikolai(coils: u32, theta0: f64, a_over_b: f64, nu: f64) -> Result<Self> {
-        Self::with_stiffness(coils, theta0, Stiffness::nikolai(a_over_b, nu)?)
-    }
-
-    /// A rod with the stiffnesses of a [`Stiffness`].
-    ///
-    /// # Errors
-    /// As [`Rod::new`].
-    pub fn with_stiffness(coils: u32, theta0: f64, stiffness: Stiffness) -> Result<Self> {
-        Self::new(coils, theta0, stiffness.a(), stiffness.b(), stiffness.c())
+    /// [`Error::InvalidArgument`] if a component is not finite.
+    pub fn with_intrinsic_strains(mut self, strains: Vector3<f64>) -> Result<Self> {
+        for (name, v) in ["u10", "u20", "u30"].into_iter().zip(strains.iter()) {
+            if !v.is_finite() {
+                return Err(Error::InvalidArgument {
+                    name,
+                    value: *v,
+                    allowed: "a finite intrinsic strain",
+                });
+            }
+        }
+        self.strain_offset = strains - Self::helical_strains(self.coils, self.theta0);
+        Ok(self)
     }
 
     /// The stiffnesses (A, B, C).
     #[must_use]
     pub fn stiffness(&self) -> Stiffness {
         Stiffness::new(self.a, self.b, self.c).expect("validated by Rod::new")
+    }
+
+    /// The force scale (2πn)²B of F/((2πn)²B).
+    #[must_use]
+    pub fn scale(&self) -> ForceScale {
+        ForceScale::new(self.coils, self.b).expect("validated by Rod::new")
     }
 
     /// The same rod under another [`Control`].
@@ -279,33 +259,29 @@ impl Rod {
         self.theta0
     }
 
-    /// Bending stiffness A about d1.
-    #[must_use]
-    pub fn bending_stiffness_1(&self) -> f64 {
-        self.a
-    }
-
-    /// Bending stiffness B about d2 (the axis of intrinsic curvature).
-    #[must_use]
-    pub fn bending_stiffness_2(&self) -> f64 {
-        self.b
-    }
-
-    /// Torsional stiffness C.
-    #[must_use]
-    pub fn torsional_stiffness(&self) -> f64 {
-        self.c
-    }
-
-    /// Intrinsic strains u0 = 2πn (0, sin θ0, cos θ0) of this rod.
+    /// Intrinsic strains u0 of this rod: 2πn (0, sin θ0, cos θ0) unless
+    /// given by [`Rod::with_intrinsic_strains`].
     #[must_use]
     pub fn intrinsic_strains(&self) -> Vector3<f64> {
-        Self::intrinsic_strains_at(self.coils, self.theta0)
+        self.intrinsic_strains_at(self.theta0)
     }
 
-    fn intrinsic_strains_at(coils: u32, theta0: f64) -> Vector3<f64> {
+    /// Whether u0 is that of the helix of n coils at θ0 (then the helix is
+    /// an exact unstressed solution, [`Rod::unstressed`]).
+    #[must_use]
+    pub fn is_helical(&self) -> bool {
+        self.strain_offset == Vector3::zeros()
+    }
+
+    pub(crate) fn helical_strains(coils: u32, theta0: f64) -> Vector3<f64> {
         let k = 2.0 * PI * f64::from(coils);
         Vector3::new(0.0, k * theta0.sin(), k * theta0.cos())
+    }
+
+    /// u0 when the helix angle parameter is `theta0` (continuation in θ0
+    /// moves the helical part; a custom offset stays).
+    fn intrinsic_strains_at(&self, theta0: f64) -> Vector3<f64> {
+        Self::helical_strains(self.coils, theta0) + self.strain_offset
     }
 
     fn intrinsic_strains_derivative(coils: u32, theta0: f64) -> Vector3<f64> {
@@ -313,7 +289,7 @@ impl Rod {
         Vector3::new(0.0, k * theta0.cos(), -k * theta0.sin())
     }
 
-    /// The parameter vector of the unstressed state: λ = 0, Δz = cos θ0, θ0.
+    /// The parameter vector of the unstressed helix: λ = 0, Δz = cos θ0, θ0.
     #[must_use]
     pub fn parameters_at_rest(&self) -> [f64; 3] {
         [0.0, self.theta0.cos(), self.theta0]
@@ -325,7 +301,7 @@ impl Rod {
     ///
     /// ```
     /// use hockle::rod::Rod;
-    /// let rod = Rod::nikolai(4, 89.8_f64.to_radians(), 10.0, 0.05)?;
+    /// let rod = Rod::new(4, 89.8_f64.to_radians(), hockle::Stiffness::nikolai(10.0, 0.05)?)?;
     /// let y1 = rod.unstressed(1.0);
     /// assert!(y1[0].abs() < 1e-15 && y1[1].abs() < 1e-15); // back on the axis
     /// assert!((y1[2] - rod.theta0().cos()).abs() < 1e-15); // Δz = cos θ0

@@ -21,7 +21,7 @@ impl Rod {
         let m = Vector3::new(y[M], y[M + 1], y[M + 2]);
         let mm = rq.transpose() * m;
         let u = Vector3::new(mm.x / self.a, mm.y / self.b, mm.z / self.c)
-            + Self::intrinsic_strains_at(self.coils, theta0);
+            + self.intrinsic_strains_at(theta0);
         (rq, u)
     }
 }

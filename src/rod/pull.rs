@@ -1,230 +1,129 @@
 //! Pulling the spring: pseudo-arclength continuation in the force (or the
-//! extension) from the unstressed helix, with the pop-outs (folds) located.
+//! extension) from the unstressed helix to a [`Target`], with the folds
+//! located.
 //!
-//! [`Pull`] is a rod-specific front end to [`crate::continuation`]: it
+//! [`Pull`] is a thin rod-specific front end to [`crate::continuation`]: it
 //! chooses the norm, the start and the stop, and turns the continuation's
-//! points into [`PullPoint`]s (force, extension, loop count, planarity) and
-//! its located folds into [`Fold`]s.
+//! points into a [`ForceExtension`] curve with a loop count per point and
+//! located [`Fold`]s. The run's vocabulary (points, observers, the
+//! termination) is the continuation's.
 //!
 //! ```text
 //!   unknowns  x = (y(·), λ),   λ = F_z  (or Δz under extension control)
 //!   equations rod BVP (collocation) and
 //!             ⟨y − y_k, ẏ_k⟩ + θ (λ − λ_k) λ̇_k = Δs        (pseudo-arclength)
-//!   ⟨a, b⟩  = Σ_i w_i ∫₀¹ a_i b_i ds,   w = 1 (r, q), 1/(2πn)⁴ (F), 1e-3 (M),
-//!             θ = 1/(2πn)⁴ under force control, 1 under extension control
+//!   ⟨a, b⟩  = Σ_i w_i ∫₀¹ a_i b_i ds,   w = 1 (r, q), 1/((2πn)²B)² (F), 1e-3 (M),
+//!             θ = 1/((2πn)²B)² under force control, 1 under extension control
 //! ```
 //!
-//! The run starts from the unstressed helix (λ = 0) and a second solution
-//! a small load away (F/(2πn)² = ±1e-4, or Δz ± 1e-4), from which the
-//! continuation takes its first step Δs = 2e-3: small enough not to jump
-//! over the helix's initial turn-and-shear stretch at almost constant force.
-//! Step control, tangents and fold location (Illinois iteration on the
-//! arclength of the step, to 1e-9) are [`crate::continuation`]'s, with the
-//! angle check between successive tangents (0.3 rad) that keeps the trace
-//! from jumping between nearby branches; branch-point detection is off (the
-//! rod's phase condition keeps the pull free of them, as the `rod` tests
-//! check with it on), which lets the corrector keep its factorisation.
+//! The run starts from the rest state (λ = 0, or Δz at rest) with a first
+//! step Δs equal to the distance, in this norm, to the equilibrium a load
+//! δ = min(1e-4, |target|/2) away (F/((2πn)²B) = ±δ, or Δz ± δ): small
+//! enough not to jump over the helix's initial turn-and-shear stretch at
+//! almost constant force, and never past the target. Step control, tangents
+//! and fold location (Illinois iteration on the arclength of the step, to
+//! 1e-9) are [`crate::continuation`]'s, with the angle check between
+//! successive tangents (0.3 rad) that keeps the trace from jumping between
+//! nearby branches; branch-point detection is off (the rod's phase
+//! condition keeps the pull free of them, as the `rod` tests check with it
+//! on), which lets the corrector keep its factorisation. The target is a
+//! stop of the continuation: the last point is located on it.
 
-use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
 
-use super::{Control, Equilibrium, Rod};
-use crate::bvp::{Collocation, Mesh};
-use crate::continuation::{Continuation, PointKind, Termination, Trace};
-use crate::curve::{self, Fold, FoldKind, ForceExtension, ForcePoint};
+use super::{Equilibrium, Rod};
+use crate::bvp::{Collocation, Mesh, Solution};
+use crate::continuation::{Continuation, Observer, Point, PointKind, Termination, Trace};
+use crate::curve::{Fold, FoldKind, ForceExtension, ForcePoint};
 use crate::error::{Error, Result};
+use crate::load::{Control, Target};
 
-/// One accepted point of a pull.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct PullPoint {
-    /// F_z, the physical tension.
-    pub force: f64,
-    /// F_z/(2πn)².
-    pub force_scaled: f64,
-    /// Δz = z(1).
-    pub extension: f64,
-    /// Arclength along the curve in the continuation norm.
-    pub arclength: f64,
-    /// Newton iterations of the step.
-    pub newton_iterations: u32,
-    /// The loop count of the shape ([`Equilibrium::loops`]; meaningful on
-    /// the near-planar stretches, not during 3D excursions).
-    pub loops: u32,
-    /// Distance from planarity ([`Equilibrium::planarity`]).
-    pub planarity: f64,
-}
-
-/// A stretch of the curve between two folds (or a fold and an end).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct Stretch {
-    /// Index of the first point of the stretch.
-    pub first: usize,
-    /// Index of the last point of the stretch.
-    pub last: usize,
-    /// The loop count at the most nearly planar point of the stretch.
-    pub loops: u32,
-    /// The smallest distance from planarity on the stretch.
-    pub planarity: f64,
-}
-
-/// Why a pull ended.
-#[derive(Debug, Clone, PartialEq)]
-#[non_exhaustive]
-pub enum PullTermination {
-    /// The controlled load (force, or extension under extension control)
-    /// reached the requested value.
-    ReachedForce,
-    /// The step limit was reached.
-    MaxSteps(usize),
-    /// The observer asked to stop.
-    Stopped,
-    /// No step ≥ Δs_min converged; `error` is the last solver error.
-    StepTooSmall {
-        /// The last solver error.
-        error: Error,
-    },
-    /// The start (the unstressed helix) could not be solved.
-    StartFailed(Error),
-}
-
-impl core::fmt::Display for PullTermination {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        match self {
-            PullTermination::ReachedForce => f.write_str("reached the requested load"),
-            PullTermination::MaxSteps(n) => write!(f, "stopped after the maximum of {n} steps"),
-            PullTermination::Stopped => f.write_str("stopped by the observer"),
-            PullTermination::StepTooSmall { error } => {
-                write!(f, "no step above the minimum size converged ({error})")
-            }
-            PullTermination::StartFailed(e) => write!(f, "the start failed ({e})"),
-        }
-    }
-}
-
-/// Hooks called during [`Pull::run`]; both default to continuing.
-/// Implemented for `()` and for closures `FnMut(&Equilibrium, &PullPoint) ->
-/// ControlFlow<()>` (called on every point).
-pub trait PullObserver {
-    /// Called on every accepted point, with its equilibrium.
-    fn point(&mut self, equilibrium: &Equilibrium, point: &PullPoint) -> ControlFlow<()> {
-        let _ = (equilibrium, point);
-        ControlFlow::Continue(())
-    }
-
-    /// Called on every located fold, with the equilibrium at the fold.
-    fn fold(&mut self, equilibrium: &Equilibrium, fold: &Fold) -> ControlFlow<()> {
-        let _ = (equilibrium, fold);
-        ControlFlow::Continue(())
-    }
-}
-
-impl PullObserver for () {}
-
-impl<F> PullObserver for F
-where
-    F: FnMut(&Equilibrium, &PullPoint) -> ControlFlow<()>,
-{
-    fn point(&mut self, equilibrium: &Equilibrium, point: &PullPoint) -> ControlFlow<()> {
-        self(equilibrium, point)
-    }
-}
-
-/// The result of a pull: every accepted point in order, the folds, and why
-/// it ended. A failed run keeps its points.
+/// The result of a pull: the curve in continuation order, its located folds,
+/// the loop count at every point, and why it ended. A run that stops early
+/// keeps every point.
 #[derive(Debug, Clone)]
 pub struct PullRun {
-    /// The rod that was pulled.
-    pub rod: Rod,
-    /// Accepted points in continuation order (the first is the start).
-    pub points: Vec<PullPoint>,
-    /// Located folds in order: each with its [`FoldKind`], the index of the
-    /// last point before it, and its force, extension and arclength.
-    pub folds: Vec<Fold>,
-    /// Why the run ended.
-    pub termination: PullTermination,
-    /// Accepted steps.
-    pub steps: usize,
-    /// Rejected (retried) steps.
-    pub rejected: usize,
-    /// Total Newton iterations: the start, every corrector (rejected steps
-    /// and fold location included).
-    pub newton_iterations: u64,
-    /// Mesh intervals used.
-    pub intervals: usize,
-    /// Wall-clock time of the run.
-    pub elapsed: Duration,
+    rod: Rod,
+    target: Target,
+    curve: ForceExtension,
+    folds: Vec<Fold>,
+    loops: Vec<Option<u32>>,
+    termination: Termination,
+    steps: usize,
+    rejected: usize,
+    newton_iterations: u64,
+    elapsed: Duration,
 }
 
 impl PullRun {
-    /// The force–extension curve (parameter: arclength).
+    /// The rod that was pulled (with the control of its target).
     #[must_use]
-    pub fn curve(&self) -> ForceExtension {
-        let mut c = ForceExtension::new("rod pull", "arclength", self.rod.coils())
-            .expect("coils ≥ 1 is checked by Rod::new");
-        c.extend(self.points.iter().map(|p| ForcePoint {
-            extension: p.extension,
-            force: p.force,
-            parameter: p.arclength,
-        }));
-        c
+    pub fn rod(&self) -> &Rod {
+        &self.rod
     }
 
-    /// The stretches between folds, each with its loop count (taken where
-    /// the shape is closest to planar).
+    /// The target of the pull.
     #[must_use]
-    pub fn stretches(&self) -> Vec<Stretch> {
-        let mut bounds = vec![0];
-        bounds.extend(self.folds.iter().map(|f| f.index + 1));
-        bounds.push(self.points.len());
-        bounds
-            .windows(2)
-            .filter(|w| w[1] > w[0])
-            .map(|w| {
-                let best = (w[0]..w[1])
-                    .min_by(|&a, &b| {
-                        self.points[a]
-                            .planarity
-                            .total_cmp(&self.points[b].planarity)
-                    })
-                    .unwrap_or(w[0]);
-                Stretch {
-                    first: w[0],
-                    last: w[1] - 1,
-                    loops: self.points[best].loops,
-                    planarity: self.points[best].planarity,
-                }
-            })
-            .collect()
+    pub fn target(&self) -> Target {
+        self.target
     }
 
-    /// Loops lost between the first and the last stretch.
+    /// The force–extension curve (parameter: arclength), from the rest state
+    /// to the last point; located folds are in [`Self::folds`], not points.
     #[must_use]
-    pub fn loops_lost(&self) -> i64 {
-        let s = self.stretches();
-        match (s.first(), s.last()) {
-            (Some(a), Some(b)) => i64::from(a.loops) - i64::from(b.loops),
-            _ => 0,
-        }
+    pub fn curve(&self) -> &ForceExtension {
+        &self.curve
     }
 
-    /// The pop-outs: each maximum fold of the controlled load paired with
-    /// the minimum fold that follows it (force folds under force control,
-    /// extension folds under extension control).
+    /// The located folds of the controlled load, in order; each fold's
+    /// `index` is the last curve point before it.
     #[must_use]
-    pub fn pop_outs(&self) -> Vec<(Fold, Fold)> {
-        self.folds
-            .windows(2)
-            .filter(|w| {
-                matches!(
-                    (w[0].kind, w[1].kind),
-                    (FoldKind::MaxForce, FoldKind::MinForce)
-                        | (FoldKind::MaxExtension, FoldKind::MinExtension)
-                )
-            })
-            .map(|w| (w[0], w[1]))
-            .collect()
+    pub fn folds(&self) -> &[Fold] {
+        &self.folds
+    }
+
+    /// The loop count of every curve point ([`Equilibrium::loops`]).
+    #[must_use]
+    pub fn loops(&self) -> &[Option<u32>] {
+        &self.loops
+    }
+
+    /// Why the run ended: [`Termination::ParameterValue`] when it reached
+    /// its target.
+    #[must_use]
+    pub fn termination(&self) -> &Termination {
+        &self.termination
+    }
+
+    /// Whether the last point is the target.
+    #[must_use]
+    pub fn reached_target(&self) -> bool {
+        matches!(self.termination, Termination::ParameterValue(_))
+    }
+
+    /// Accepted continuation steps.
+    #[must_use]
+    pub fn steps(&self) -> usize {
+        self.steps
+    }
+
+    /// Rejected (retried) steps.
+    #[must_use]
+    pub fn rejected(&self) -> usize {
+        self.rejected
+    }
+
+    /// Newton iterations: the start and every corrector (rejected steps and
+    /// fold location included).
+    #[must_use]
+    pub fn newton_iterations(&self) -> u64 {
+        self.newton_iterations
+    }
+
+    /// Wall-clock time of the run.
+    #[must_use]
+    pub fn elapsed(&self) -> Duration {
+        self.elapsed
     }
 }
 
@@ -232,53 +131,48 @@ impl core::fmt::Display for PullRun {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         writeln!(
             f,
-            "pull of {}: {} points, {} folds, {} steps ({} rejected), {} intervals, {:.2?}: {}",
+            "pull of {} to {}: {} points, {} folds, {} steps ({} rejected), {:.2?}: {}",
             self.rod,
-            self.points.len(),
+            self.target,
+            self.curve.len(),
             self.folds.len(),
             self.steps,
             self.rejected,
-            self.intervals,
             self.elapsed,
             self.termination
         )?;
         for fold in &self.folds {
             writeln!(
                 f,
-                "  {} at Δz = {:.6}, F/(2πn)² = {:.6}",
+                "  {} at Δz = {:.6}, F/((2πn)²B) = {:.6}",
                 fold.kind,
                 fold.point.extension,
-                fold.point.force_scaled(self.rod.coils())
-            )?;
-        }
-        for s in self.stretches() {
-            writeln!(
-                f,
-                "  points {}..={}: {} loops (planarity {:.1e})",
-                s.first, s.last, s.loops, s.planarity
+                fold.point.force_scaled(self.curve.scale())
             )?;
         }
         Ok(())
     }
 }
 
-/// Pulls a [`Rod`] from its unstressed helix by pseudo-arclength
-/// continuation in the force (module docs: [`crate::rod`]).
+/// Pulls a [`Rod`] from its rest state to a [`Target`] by pseudo-arclength
+/// continuation (module docs: [`crate::rod`]).
 ///
 /// ```no_run
 /// use hockle::rod::{Pull, Rod};
-/// let rod = Rod::nikolai(4, 89.8_f64.to_radians(), 10.0, 0.05)?;
-/// let run = Pull::new(rod).to_force_scaled(3.0).run(());
-/// assert_eq!(run.pop_outs().len(), 3); // the paper's cascade 4 → 3 → 2 → 1
+/// use hockle::{Stiffness, Target};
+/// let rod = Rod::new(4, 89.8_f64.to_radians(), Stiffness::nikolai(10.0, 0.05)?)?;
+/// let run = Pull::new(rod, Target::Force(3.0)).run(())?;
+/// assert_eq!(run.folds().len(), 6); // the paper's cascade 4 → 3 → 2 → 1
+/// assert!(run.reached_target());
 /// # Ok::<(), hockle::Error>(())
 /// ```
 #[derive(Debug, Clone)]
 pub struct Pull {
     rod: Rod,
-    target: f64,
+    target: Target,
     intervals: usize,
     points: usize,
-    ds0: f64,
+    first_step: Option<f64>,
     ds_min: f64,
     ds_max: f64,
     max_steps: usize,
@@ -286,28 +180,34 @@ pub struct Pull {
     locate_folds: bool,
 }
 
+/// Largest load, in the controlled quantity, of the second equilibrium that
+/// sets the first step (module docs).
+const START_LOAD: f64 = 1e-4;
+
 impl Pull {
-    /// A pull of `rod` under force control (dead load; folds in the force
-    /// are where the spring jumps) with the defaults:
+    /// A pull of `rod` to `target` (force control for [`Target::Force`],
+    /// extension control for [`Target::Extension`]) with the defaults:
     ///
     /// | setting | default |
     /// |---|---|
-    /// | [`to_force_scaled`](Self::to_force_scaled) | 3 (the paper's Fig. spring) |
-    /// | [`extension_control`](Self::extension_control) | off |
     /// | [`intervals`](Self::intervals) | 48 uniform mesh intervals (folds converged to 6e-7 against 128) |
     /// | [`points`](Self::points) | 4 Gauss points per interval |
-    /// | [`step`](Self::step) | Δs = 2e-3 first, within [1e-7, 0.02] |
+    /// | [`step`](Self::step) | first Δs: the distance to a load 1e-4 away (module docs); within [1e-7, 0.02] |
     /// | [`max_steps`](Self::max_steps) | 20 000 |
     /// | [`max_angle`](Self::max_angle) | 0.3 rad between successive tangents |
     /// | [`locate_folds`](Self::locate_folds) | yes |
+    ///
+    /// Setters do not fail; [`Pull::check`] (called by [`Pull::run`] and
+    /// [`Pull::start`] before any work) validates every setting and the
+    /// target.
     #[must_use]
-    pub fn new(rod: Rod) -> Self {
+    pub fn new(rod: Rod, target: Target) -> Self {
         Self {
-            rod: rod.with_control(Control::Force),
-            target: 3.0,
+            rod: rod.with_control(target.control()),
+            target,
             intervals: 48,
             points: 4,
-            ds0: 2e-3,
+            first_step: None,
             ds_min: 1e-7,
             ds_max: 0.02,
             max_steps: 20_000,
@@ -316,22 +216,11 @@ impl Pull {
         }
     }
 
-    /// Force control, stopping once F/(2πn)² exceeds `f` (a negative
-    /// target pushes instead).
+    /// The same pull to another target.
     #[must_use]
-    pub fn to_force_scaled(mut self, f: f64) -> Self {
-        self.rod = self.rod.with_control(Control::Force);
-        self.target = f;
-        self
-    }
-
-    /// Extension control (hard device: Δz prescribed, F_z an unknown; folds
-    /// in Δz are where the spring jumps), stopping once Δz exceeds `dz`
-    /// (or falls below it, if it is below the rest extension cos θ0).
-    #[must_use]
-    pub fn extension_control(mut self, dz: f64) -> Self {
-        self.rod = self.rod.with_control(Control::Extension);
-        self.target = dz;
+    pub fn to(mut self, target: Target) -> Self {
+        self.rod = self.rod.with_control(target.control());
+        self.target = target;
         self
     }
 
@@ -342,12 +231,6 @@ impl Pull {
         self
     }
 
-    /// The number of mesh intervals this pull uses.
-    #[must_use]
-    pub fn mesh_intervals(&self) -> usize {
-        self.intervals
-    }
-
     /// Gauss points per interval (2..=7).
     #[must_use]
     pub fn points(mut self, m: usize) -> Self {
@@ -355,10 +238,10 @@ impl Pull {
         self
     }
 
-    /// First step Δs and its bounds [ds_min, ds_max].
+    /// First step Δs and the bounds [ds_min, ds_max] of every step.
     #[must_use]
     pub fn step(mut self, ds: f64, ds_min: f64, ds_max: f64) -> Self {
-        self.ds0 = ds;
+        self.first_step = Some(ds);
         self.ds_min = ds_min;
         self.ds_max = ds_max;
         self
@@ -378,110 +261,125 @@ impl Pull {
         self
     }
 
-    /// Whether to locate folds precisely (otherwise only detect them).
+    /// Whether to locate folds precisely (otherwise only detect them, at the
+    /// last point before each).
     #[must_use]
     pub fn locate_folds(mut self, on: bool) -> Self {
         self.locate_folds = on;
         self
     }
 
-    fn scale(&self) -> f64 {
-        curve::force_scale(self.rod.coils())
+    /// The rod, with the control of the target.
+    #[must_use]
+    pub fn rod(&self) -> &Rod {
+        &self.rod
     }
 
-    fn validate(&self) -> Result<Collocation> {
-        if self.intervals == 0 {
+    /// The target.
+    #[must_use]
+    pub fn target(&self) -> Target {
+        self.target
+    }
+
+    /// The number of mesh intervals.
+    #[must_use]
+    pub fn mesh_intervals(&self) -> usize {
+        self.intervals
+    }
+
+    /// Validates every setting and the target, and returns the collocation
+    /// solver the pull will use. No equation is solved.
+    ///
+    /// # Errors
+    /// [`Error::InvalidCount`] for a mesh or Gauss-point count out of range;
+    /// [`Error::InvalidArgument`] for step sizes that are not
+    /// 0 < ds_min ≤ |ds| ≤ ds_max < ∞, a maximum angle outside (0, π], or no
+    /// steps; [`Error::UnreachableTarget`] for a target the spring cannot
+    /// reach (for extensions, judged against cos θ0 when the rod is
+    /// helical); [`Error::OutsideModel`] at θ0 = 90°, where the unstressed
+    /// ring closes on itself and its end forces are undetermined.
+    pub fn check(&self) -> Result<Collocation> {
+        if self.rod.theta0() == core::f64::consts::FRAC_PI_2 {
+            return Err(Error::OutsideModel {
+                model: "rod",
+                assumption: "the pull starts from the unstressed helix, whose ends meet at θ0 = 90° \
+                             (a closed ring: end forces undetermined); use θ0 < 90°, or continue \
+                             a planar solution in θ0 with `continuation`",
+            });
+        }
+        if self.rod.is_helical() {
+            self.target.validate(self.rod.theta0().cos())?;
+        } else {
+            self.target.validate(f64::NAN)?;
+        }
+        let ds = self.first_step.unwrap_or(self.ds_min);
+        if !(self.ds_min > 0.0
+            && self.ds_min <= ds.abs()
+            && ds.abs() <= self.ds_max
+            && self.ds_max.is_finite())
+        {
+            return Err(Error::InvalidArgument {
+                name: "step",
+                value: ds,
+                allowed: "0 < ds_min ≤ |ds| ≤ ds_max < ∞",
+            });
+        }
+        if !(self.max_angle > 0.0 && self.max_angle <= core::f64::consts::PI) {
+            return Err(Error::InvalidArgument {
+                name: "max_angle",
+                value: self.max_angle,
+                allowed: "an angle in (0, π] radians",
+            });
+        }
+        if self.max_steps == 0 {
             return Err(Error::InvalidCount {
-                name: "intervals",
+                name: "max_steps",
                 value: 0,
-                allowed: "at least 1 mesh interval",
+                allowed: "at least 1 step",
             });
         }
-        if !(self.ds_min > 0.0 && self.ds_min <= self.ds0 && self.ds0 <= self.ds_max) {
-            return Err(Error::InvalidArgument {
-                name: "ds",
-                value: self.ds0,
-                allowed: "0 < ds_min ≤ ds ≤ ds_max",
-            });
-        }
-        if !self.target.is_finite() {
-            return Err(Error::InvalidArgument {
-                name: "force_scaled",
-                value: self.target,
-                allowed: "a finite force",
-            });
-        }
-        Ok(Collocation::new()
+        let solver = Collocation::new()
             .points(self.points)
             .mesh(Mesh::uniform(self.intervals)?)
-            .max_newton(12))
+            .max_newton(12);
+        solver.validate()?;
+        Ok(solver)
     }
 
-    /// Runs the pull, calling `observer` on every point and fold.
+    /// Solves the rest state and prepares the continuation: the first half
+    /// of [`Pull::run`], for users who drive the steps themselves
+    /// ([`Start::steps`]).
     ///
-    /// Never fails: a run that cannot go on keeps its points and says why in
-    /// [`PullRun::termination`]. At θ0 = 90° exactly the unstressed ring has
-    /// both ends at the origin, so F_x, F_y are undetermined at rest and the
-    /// start is singular ([`PullTermination::StartFailed`]); trace the planar
-    /// case from a planar solution with [`crate::continuation`] instead (as
-    /// the `rod` tests do).
-    pub fn run<O: PullObserver>(&self, mut observer: O) -> PullRun {
-        self.run_with(&mut observer)
-    }
-
-    /// [`Pull::run`] with a borrowed observer (to read what it collected
-    /// afterwards).
-    pub fn run_with<O: PullObserver>(&self, observer: &mut O) -> PullRun {
-        let start = Instant::now();
-        let mut run = PullRun {
-            rod: self.rod,
-            points: Vec::new(),
-            folds: Vec::new(),
-            termination: PullTermination::ReachedForce,
-            steps: 0,
-            rejected: 0,
-            newton_iterations: 0,
-            intervals: self.intervals,
-            elapsed: Duration::ZERO,
-        };
-        run.termination = match self.trace(&mut run, observer) {
-            Ok(t) => t,
-            Err(e) => PullTermination::StartFailed(e),
-        };
-        run.elapsed = start.elapsed();
-        run
-    }
-
-    fn trace<O: PullObserver>(
-        &self,
-        run: &mut PullRun,
-        observer: &mut O,
-    ) -> Result<PullTermination> {
-        let solver = self.validate()?;
+    /// # Errors
+    /// As [`Pull::check`]; a typed solver error if the rest state cannot be
+    /// solved (with custom intrinsic strains far from the helix's); for a
+    /// non-helical rod, [`Error::UnreachableTarget`] if an extension target
+    /// equals the solved rest extension.
+    pub fn start(&self) -> Result<Start> {
+        let solver = self.check()?;
         let rod = self.rod;
-        let scale = self.scale();
-        let p0 = rod.parameters_at_rest();
-        let (param, theta, stop) = match rod.control() {
-            Control::Force => (Rod::FORCE, 1.0 / (scale * scale), self.target * scale),
-            Control::Extension => (Rod::EXTENSION, 1.0, self.target),
+        let scale = rod.scale().value();
+        let mut p0 = rod.parameters_at_rest();
+        let rest = relaxed_rest(&solver, &rod, &p0)?;
+        let rest_extension = rest.at_mesh(rest.mesh().intervals())[2];
+        p0[Rod::EXTENSION] = rest_extension;
+        let (param, theta, stop, from) = match self.target {
+            Target::Force(f) => (Rod::FORCE, 1.0 / (scale * scale), f * scale, 0.0),
+            Target::Extension(dz) => {
+                self.target.validate(rest_extension)?;
+                (Rod::EXTENSION, 1.0, dz, rest_extension)
+            }
         };
-        let sign = if stop >= p0[param] { 1.0 } else { -1.0 };
-        let s0 = solver.solve(&rod, |s: f64| rod.unstressed(s), &p0)?;
-        // A second point a small load away starts the continuation, so that
-        // its first step (Δs = ds0) cannot jump over the initial turn-and-
-        // shear stretch at almost constant force.
-        let mut p1 = p0;
-        match rod.control() {
-            Control::Force => p1[Rod::FORCE] = sign * 1e-4 * scale,
-            Control::Extension => p1[Rod::EXTENSION] += sign * 1e-4,
-        }
-        let s1 = solver.solve(&rod, &s0, &p1)?;
-        run.newton_iterations += u64::from(s0.newton().iterations + s1.newton().iterations);
+        let sign = if stop >= from { 1.0 } else { -1.0 };
+        let rest = if rod.control() == Control::Extension {
+            solver.solve(&rod, &rest, &p0)?
+        } else {
+            rest
+        };
         let cont = Continuation::new(param)
-            .solver(solver)
+            .solver(solver.clone())
             .weights(&weights(scale))
             .parameter_weight(theta)
-            .step(sign * self.ds0)
             .step_bounds(self.ds_min, self.ds_max)
             .max_steps(self.max_steps)
             .max_angle(self.max_angle)
@@ -489,124 +387,194 @@ impl Pull {
             .detect_folds(self.locate_folds)
             .detect_branch_points(false)
             .stop_at(stop);
-        let offset = cont.distance(&s0, &s1)?;
-        let eq = Equilibrium::new(rod, s0)?;
-        let pt = self.point(&eq, 0.0, eq.solution().newton().iterations);
-        run.points.push(pt);
-        if observer.point(&eq, &pt).is_break() {
-            return Ok(PullTermination::Stopped);
-        }
-        let mut trace = cont.trace(&rod, &s1)?;
-        let outcome = self.follow(&mut trace, offset, run, observer);
-        run.steps = trace.steps();
-        run.rejected = trace.rejected();
-        run.newton_iterations += trace.newton_iterations();
-        if let Some(t) = outcome? {
-            return Ok(t);
-        }
-        Ok(match trace.termination() {
-            Some(Termination::ParameterValue(_)) | None => PullTermination::ReachedForce,
-            Some(Termination::MaxSteps(n)) => PullTermination::MaxSteps(*n),
-            Some(Termination::Stopped) => PullTermination::Stopped,
-            Some(Termination::NewtonFailed { reason: e, .. })
-            | Some(Termination::Singular(e))
-            | Some(Termination::NonFinite(e)) => PullTermination::StepTooSmall { error: e.clone() },
-            Some(Termination::AngleTooLarge { angle, .. }) => PullTermination::StepTooSmall {
-                error: Error::InvalidArgument {
-                    name: "step angle",
-                    value: *angle,
-                    allowed: "tangents turning by less than the maximum angle",
-                },
-            },
-            Some(other) => PullTermination::StepTooSmall {
-                error: Error::InvalidArgument {
-                    name: "continuation",
-                    value: f64::NAN,
-                    allowed: match other {
-                        Termination::Event(_) => "no user events in a pull",
-                        _ => "a known continuation termination",
-                    },
-                },
-            },
+        let ds = match self.first_step {
+            Some(ds) => ds.abs(),
+            None => {
+                // A second equilibrium a small load δ away measures the
+                // first step in the continuation norm.
+                let delta = START_LOAD.min(0.5 * (self.target.value() - from).abs());
+                let mut p1 = p0;
+                match self.target {
+                    Target::Force(_) => p1[Rod::FORCE] = sign * delta * scale,
+                    Target::Extension(_) => p1[Rod::EXTENSION] += sign * delta,
+                }
+                let near = solver.solve(&rod, &rest, &p1)?;
+                cont.distance(&rest, &near)?.clamp(self.ds_min, self.ds_max)
+            }
+        };
+        Ok(Start {
+            rod,
+            target: self.target,
+            continuation: cont.step(sign * ds),
+            rest,
         })
     }
 
-    /// Turns the continuation's points into pull points and folds, calling
-    /// the observer; `Some` when the observer stopped the run.
-    fn follow<O: PullObserver>(
-        &self,
-        trace: &mut Trace<'_, Rod>,
-        offset: f64,
-        run: &mut PullRun,
-        observer: &mut O,
-    ) -> Result<Option<PullTermination>> {
-        let rod = self.rod;
-        // dλ/ds at the last curve point, and (without fold location) its
-        // equilibrium, which then stands for a fold detected after it.
-        let mut last_dl = 0.0;
-        let mut last_eq: Option<Equilibrium> = None;
-        for p in trace {
-            let dl = p.dparameter_ds();
-            let detected = match p.kind() {
-                PointKind::Fold => Some((
-                    Equilibrium::new(rod, p.solution().clone())?,
-                    offset + p.arclength(),
-                )),
-                _ if !self.locate_folds && last_dl * dl < 0.0 => {
-                    last_eq.take().zip(run.points.last().map(|q| q.arclength))
-                }
-                _ => None,
-            };
-            if let Some((eq, arclength)) = detected {
-                let kind = match (rod.control(), last_dl > 0.0) {
-                    (Control::Force, true) => FoldKind::MaxForce,
-                    (Control::Force, false) => FoldKind::MinForce,
-                    (Control::Extension, true) => FoldKind::MaxExtension,
-                    (Control::Extension, false) => FoldKind::MinExtension,
-                };
-                let fold = Fold {
-                    kind,
-                    index: run.points.len() - 1,
-                    point: ForcePoint {
-                        extension: eq.extension(),
-                        force: eq.force(),
-                        parameter: arclength,
-                    },
-                };
-                run.folds.push(fold);
-                if observer.fold(&eq, &fold).is_break() {
-                    return Ok(Some(PullTermination::Stopped));
-                }
-            }
-            if p.kind() == PointKind::Fold {
-                continue;
-            }
-            let eq = Equilibrium::new(rod, p.solution().clone())?;
-            let pt = self.point(&eq, offset + p.arclength(), p.newton_iterations());
-            run.points.push(pt);
-            if observer.point(&eq, &pt).is_break() {
-                return Ok(Some(PullTermination::Stopped));
-            }
-            last_dl = dl;
-            if !self.locate_folds {
-                last_eq = Some(eq);
+    /// Runs the pull to its target, calling `observer` at every
+    /// continuation point (the rest state first; located folds are points of
+    /// kind [`PointKind::Fold`]).
+    ///
+    /// A run that cannot go on (Newton failure at the smallest step, the
+    /// step limit, the observer) keeps its points and says why in
+    /// [`PullRun::termination`].
+    ///
+    /// # Errors
+    /// As [`Pull::start`]: bad settings, an unreachable target, or a rest
+    /// state that cannot be solved; nothing is computed past the error.
+    pub fn run<O: Observer>(&self, observer: O) -> Result<PullRun> {
+        let clock = Instant::now();
+        let start = self.start()?;
+        let mut trace = start.steps()?;
+        let mut recorder = Recorder::new(&start, self.locate_folds);
+        let mut observer = observer;
+        let mut stopped = false;
+        for p in trace.by_ref() {
+            recorder.record(&p)?;
+            if observer.point(&p).is_break() {
+                stopped = true;
+                break;
             }
         }
-        Ok(None)
+        let termination = if stopped {
+            Termination::Stopped
+        } else {
+            trace
+                .termination()
+                .cloned()
+                .unwrap_or(Termination::MaxSteps(trace.steps()))
+        };
+        Ok(PullRun {
+            rod: start.rod,
+            target: start.target,
+            curve: recorder.curve,
+            folds: recorder.folds,
+            loops: recorder.loops,
+            termination,
+            steps: trace.steps(),
+            rejected: trace.rejected(),
+            newton_iterations: trace.newton_iterations()
+                + u64::from(start.rest.newton().iterations),
+            elapsed: clock.elapsed(),
+        })
+    }
+}
+
+/// A pull ready to step: the rest state solved and the continuation set
+/// (from [`Pull::start`]). [`Start::steps`] iterates over the continuation's
+/// points, the rest state first, as [`Pull::run`] does.
+#[derive(Debug, Clone)]
+pub struct Start {
+    rod: Rod,
+    target: Target,
+    continuation: Continuation,
+    rest: Solution,
+}
+
+impl Start {
+    /// The rest state.
+    #[must_use]
+    pub fn rest(&self) -> &Solution {
+        &self.rest
     }
 
-    fn point(&self, eq: &Equilibrium, arclength: f64, its: u32) -> PullPoint {
-        let (loops, planarity) = eq.loops_and_planarity();
-        PullPoint {
-            force: eq.force(),
-            force_scaled: eq.force_scaled(),
-            extension: eq.extension(),
-            arclength,
-            newton_iterations: its,
-            loops,
-            planarity,
+    /// The continuation settings of the pull.
+    #[must_use]
+    pub fn continuation(&self) -> &Continuation {
+        &self.continuation
+    }
+
+    /// The continuation's step-by-step iterator from the rest state. Turn
+    /// a point into the rod's outputs with [`Equilibrium::new`]`(rod,
+    /// point.solution().clone())`.
+    ///
+    /// # Errors
+    /// An error of the first tangent computation.
+    pub fn steps(&self) -> Result<Trace<'_, Rod>> {
+        self.continuation.trace(&self.rod, &self.rest)
+    }
+}
+
+/// Turns continuation points into the curve, the folds and the loop counts.
+struct Recorder {
+    rod: Rod,
+    curve: ForceExtension,
+    folds: Vec<Fold>,
+    loops: Vec<Option<u32>>,
+    locate_folds: bool,
+    /// dλ/ds at the last curve point.
+    last_dl: f64,
+}
+
+impl Recorder {
+    fn new(start: &Start, locate_folds: bool) -> Self {
+        Self {
+            rod: start.rod,
+            curve: ForceExtension::new("rod", "arclength", start.rod.scale()),
+            folds: Vec::new(),
+            loops: Vec::new(),
+            locate_folds,
+            last_dl: 0.0,
         }
     }
+
+    fn record(&mut self, p: &Point) -> Result<()> {
+        let eq = Equilibrium::new(self.rod, p.solution().clone())?;
+        let dl = p.dparameter_ds();
+        let at = ForcePoint {
+            extension: eq.extension(),
+            force: eq.force(),
+            parameter: p.arclength(),
+        };
+        let located = p.kind() == PointKind::Fold;
+        let detected = !self.locate_folds && self.last_dl * dl < 0.0;
+        if located || detected {
+            let kind = match (self.rod.control(), self.last_dl > 0.0) {
+                (Control::Force, true) => FoldKind::MaxForce,
+                (Control::Force, false) => FoldKind::MinForce,
+                (Control::Extension, true) => FoldKind::MaxExtension,
+                (Control::Extension, false) => FoldKind::MinExtension,
+            };
+            let index = self.curve.len().saturating_sub(1);
+            let point = if located {
+                at
+            } else {
+                self.curve.points()[index]
+            };
+            self.folds.push(Fold { kind, index, point });
+        }
+        if !located {
+            self.curve.push(at);
+            self.loops.push(eq.loops());
+            self.last_dl = dl;
+        }
+        Ok(())
+    }
+}
+
+/// Steps of the homotopy from the helix's intrinsic strains to custom ones.
+const RELAX_STEPS: u32 = 8;
+
+/// The rest state (F = 0) under force control: the unstressed helix, or
+/// for custom intrinsic strains u0 the equilibrium reached from it by
+/// moving u0 from the helix's strains to the custom ones in
+/// [`RELAX_STEPS`] equal steps, each solved by Newton from the last.
+fn relaxed_rest(solver: &Collocation, rod: &Rod, p0: &[f64; 3]) -> Result<Solution> {
+    let free = rod.with_control(Control::Force);
+    let helical = Rod::helical_strains(rod.coils(), rod.theta0());
+    let target = rod.intrinsic_strains();
+    let mut rest = solver.solve(
+        &free.with_intrinsic_strains(helical)?,
+        |s: f64| rod.unstressed(s),
+        p0,
+    )?;
+    if !rod.is_helical() {
+        for i in 1..=RELAX_STEPS {
+            let t = f64::from(i) / f64::from(RELAX_STEPS);
+            let step = free.with_intrinsic_strains(helical + (target - helical) * t)?;
+            rest = solver.solve(&step, &rest, p0)?;
+        }
+    }
+    Ok(rest)
 }
 
 /// Weights of the continuation norm (module docs).

@@ -1,16 +1,18 @@
 //! [`ElasticaModel`]: the spring flattened into the plane.
 
-use crate::curve::ForceExtension;
-use crate::elastica::{Branch, Trace, secondary_fold};
+use crate::continuation::Termination;
+use crate::curve::{ForceExtension, ForcePoint, ForceScale};
+use crate::elastica::{Branch, Elastica, Trace, secondary_fold};
 use crate::error::Result;
+use crate::load::Target;
 
-use super::{Model, Response, Spring, check_samples, check_target};
+use super::{Model, Response, Spring, check_samples, check_simple_target};
 
 /// The spring held flat, as between two glass plates (the paper's
 /// introduction): the planar elastica with intrinsic curvature 2πn and
 /// zero end moments, pulled along its primary υ-branch. Its loops have
-/// nowhere to go, so it never pops one; pitch, anisotropy and torsion do
-/// not enter (B only).
+/// nowhere to go, so it never pops one (its loop count is n everywhere);
+/// pitch, anisotropy and torsion do not enter (B only).
 ///
 /// Its [`scaffold`](ElasticaModel::scaffold) is what the 3D spring visits
 /// between pop-outs: the primary υ-branch and the secondary υ-branches
@@ -31,23 +33,31 @@ impl ElasticaModel {
     /// An elastica model sampling each branch at `samples` points.
     ///
     /// # Errors
-    /// [`Error::InvalidCount`](crate::Error::InvalidCount) if `samples < 2`.
+    /// [`Error::InvalidCount`](crate::Error::InvalidCount) unless
+    /// 2 ≤ `samples` ≤ [`super::MAX_SAMPLES`].
     pub fn new(samples: usize) -> Result<Self> {
         Ok(Self {
             samples: check_samples(samples)?,
         })
     }
 
-    /// The branches a spring of n coils can visit up to the target force:
-    /// the primary υ-branch, then the whole secondary υ-branches j = n − 1
-    /// down to 1 (both arms, lower arm first), each scaled by the spring's
-    /// (2πn)². A secondary branch whose fold lies above the target is left
-    /// out.
+    /// The branches a spring of n coils can visit up to the force
+    /// F/((2πn)²B) = `max_force_scaled`: the primary υ-branch, then the whole
+    /// secondary υ-branches j = n − 1 down to 1 (both arms, lower arm
+    /// first), in the spring's force scale. A secondary branch whose fold
+    /// lies above the target is left out.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`](crate::Error::InvalidArgument) for a bad target.
+    /// [`Error::UnreachableTarget`](crate::Error::UnreachableTarget) unless
+    /// the force is finite and positive.
     pub fn scaffold(&self, spring: &Spring, max_force_scaled: f64) -> Result<Vec<ForceExtension>> {
-        let target = check_target(max_force_scaled)?;
+        let target = max_force_scaled;
+        if !(target.is_finite() && target > 0.0) {
+            return Err(crate::Error::UnreachableTarget {
+                target: Target::Force(target),
+                rest_extension: spring.helix_angle().cos(),
+            });
+        }
         let n = spring.coils();
         let trace = Trace::new()
             .points(self.samples)
@@ -55,9 +65,7 @@ impl ElasticaModel {
             .scale_coils(n);
         let mut branches = vec![in_units_of_b(trace.run(n, Branch::Upsilon)?, spring)];
         for j in (1..n).rev() {
-            if secondary_fold(n, j)?.force() * spring.stiffness().b()
-                < target * spring.force_scale()
-            {
+            if secondary_fold(n, j)?.force() < target * ForceScale::of_coils(n)?.value() {
                 branches.push(in_units_of_b(trace.secondary(n, j)?, spring));
             }
         }
@@ -71,32 +79,62 @@ impl Model for ElasticaModel {
     }
 
     /// # Errors
-    /// [`Error::InvalidArgument`](crate::Error::InvalidArgument) for a bad target.
-    fn pull(&self, spring: &Spring, max_force_scaled: f64) -> Result<Response> {
-        let target = check_target(max_force_scaled)?;
+    /// [`crate::Error::UnreachableTarget`] for a bad target;
+    /// [`crate::Error::OutsideModel`] for a push, or a spring whose
+    /// intrinsic strains are not those of its helix.
+    fn pull_to(&self, spring: &Spring, target: Target) -> Result<Response> {
+        let target = check_simple_target("elastica", spring, target)?;
         let n = spring.coils();
+        let force_scaled = match target {
+            Target::Force(f) => f,
+            Target::Extension(dz) => upsilon_at_extension(n, dz)?.force_scaled(),
+        };
         let curve = Trace::new()
             .points(self.samples)
-            .max_force_scaled(target)
+            .max_force_scaled(force_scaled)
             .scale_coils(n)
             .run(n, Branch::Upsilon)?;
         let curve = in_units_of_b(curve, spring);
-        let loops = vec![n; curve.len()];
-        Ok(Response::from_curve(self.name(), curve).with_loops(loops))
+        let stop = match target {
+            Target::Force(_) => force_scaled * spring.force_scale(),
+            Target::Extension(dz) => dz,
+        };
+        let loops = vec![Some(n); curve.len()];
+        Response::new(
+            self.name(),
+            target,
+            curve,
+            Termination::ParameterValue(stop),
+        )
+        .with_loops(loops)
     }
 }
 
+/// The primary υ elastica of n coils with extension `dz` ∈ (0, 1): Δz grows
+/// from 0 (the ring, k = 0) to 1 (k → 1) along the branch; bisection in k.
+fn upsilon_at_extension(n: u32, dz: f64) -> Result<Elastica> {
+    let extension = |k: f64| -> Result<f64> { Ok(Elastica::symmetric(n, k)?.upsilon.extension()) };
+    let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if extension(mid)? < dz {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Ok(Elastica::symmetric(n, lo)?.upsilon)
+}
+
 /// The elastica is solved with B = 1: forces scale with the spring's B
-/// (extensions do not), and so does the cut-off force.
+/// (extensions do not).
 fn in_units_of_b(curve: ForceExtension, spring: &Spring) -> ForceExtension {
     let b = spring.stiffness().b();
-    if b == 1.0 {
-        return curve;
-    }
-    let mut scaled =
-        ForceExtension::new(curve.label(), curve.parameter_name(), curve.scale_coils())
-            .expect("the curve's own scale coils are valid");
-    scaled.extend(curve.points().iter().map(|p| crate::curve::ForcePoint {
+    let mut scaled = ForceExtension::new(curve.label(), curve.parameter_name(), spring.scale());
+    scaled.extend(curve.points().iter().map(|p| ForcePoint {
         force: p.force * b,
         ..*p
     }));

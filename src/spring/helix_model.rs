@@ -1,17 +1,20 @@
 //! [`HelixModel`]: the spring stays an exact helix (the paper's Appendix).
 
+use crate::continuation::Termination;
 use crate::curve::{ForceExtension, ForcePoint};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::helix::Helix;
+use crate::load::Target;
 
-use super::{Model, Response, Spring, check_samples, check_target};
+use super::{Model, Response, Spring, check_samples, check_simple_target};
 
 /// The spring as an exact helix with zero axial moment throughout
 /// ([`crate::helix`]): instant, exact for θ0 far from 90° and for isotropic
-/// or slinky rods, blind to pop-outs.
+/// or slinky rods, blind to pop-outs (its loop count is n everywhere, so its
+/// force folds, where the helix force turns, are never pop-outs).
 ///
 /// The curve is sampled uniformly in extension from the rest state
-/// Δz = cos θ0 to the extension at which the force reaches the target.
+/// Δz = cos θ0 to the target; its last point is the target to rounding.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct HelixModel {
     samples: usize,
@@ -28,7 +31,8 @@ impl HelixModel {
     /// A helix model sampling its curve at `samples` points.
     ///
     /// # Errors
-    /// [`Error::InvalidCount`] if `samples < 2`.
+    /// [`crate::Error::InvalidCount`] unless 2 ≤ `samples` ≤
+    /// [`super::MAX_SAMPLES`].
     pub fn new(samples: usize) -> Result<Self> {
         Ok(Self {
             samples: check_samples(samples)?,
@@ -42,21 +46,22 @@ impl Model for HelixModel {
     }
 
     /// # Errors
-    /// [`Error::InvalidArgument`] for a bad target, or if the spring's
-    /// intrinsic strains are not those of its helix (the model assumes them).
-    fn pull(&self, spring: &Spring, max_force_scaled: f64) -> Result<Response> {
-        let target = check_target(max_force_scaled)? * spring.force_scale();
-        if !spring.is_helical() {
-            return Err(Error::InvalidArgument {
-                name: "u10",
-                value: spring.intrinsic_strains().x,
-                allowed: "the helix model needs the intrinsic strains of the unstressed helix",
-            });
-        }
+    /// [`crate::Error::UnreachableTarget`] for a bad target;
+    /// [`crate::Error::OutsideModel`] for a push, or if the spring's
+    /// intrinsic strains are not those of its helix (the model assumes
+    /// them).
+    fn pull_to(&self, spring: &Spring, target: Target) -> Result<Response> {
+        let target = check_simple_target("helix", spring, target)?;
         let helix = Helix::new(spring.coils(), spring.helix_angle(), spring.stiffness())?;
-        let theta_end = angle_at_force(&helix, target)?;
+        let (theta_end, stop) = match target {
+            Target::Force(f) => {
+                let force = f * spring.force_scale();
+                (angle_at_force(&helix, force)?, force)
+            }
+            Target::Extension(dz) => (dz.acos(), dz),
+        };
         let (z0, z1) = (spring.helix_angle().cos(), theta_end.cos());
-        let mut curve = ForceExtension::new(self.name(), "theta", spring.coils())?;
+        let mut curve = ForceExtension::new(self.name(), "theta", spring.scale());
         for i in 0..self.samples {
             let t = i as f64 / (self.samples - 1) as f64;
             let theta = if i == 0 {
@@ -72,7 +77,14 @@ impl Model for HelixModel {
                 parameter: theta,
             });
         }
-        Ok(Response::from_curve(self.name(), curve))
+        let loops = vec![Some(spring.coils()); curve.len()];
+        Response::new(
+            self.name(),
+            target,
+            curve,
+            Termination::ParameterValue(stop),
+        )
+        .with_loops(loops)
     }
 }
 

@@ -33,49 +33,84 @@ mod response;
 mod rod_model;
 mod scene;
 
-pub use crate::rod::Control;
+pub use crate::load::{Control, Target};
 pub use elastica_model::ElasticaModel;
 pub use helix_model::HelixModel;
 pub use response::{BranchMatch, Direction, Jump, PopOut, Response, Stretch};
 pub use rod_model::RodModel;
 pub use scene::Spring;
 
-use crate::error::Result;
+use crate::error::{Error, Result};
 
 /// A model of a pulled spring: answers [`Spring`]s with [`Response`]s.
 pub trait Model {
     /// A short name for tables and labels.
     fn name(&self) -> &str;
 
-    /// Pulls `spring` from rest until the force reaches
+    /// Pulls `spring` from rest to `target`: the force F/((2πn)²B) under
+    /// force control, or the extension Δz under extension control. The last
+    /// point of the curve is the target unless the run stopped early
+    /// ([`Response::termination`]).
+    ///
+    /// # Errors
+    /// [`Error::UnreachableTarget`] for a target the spring cannot reach;
+    /// [`Error::OutsideModel`] if the model cannot represent the spring or
+    /// the target; each model documents its own.
+    fn pull_to(&self, spring: &Spring, target: Target) -> Result<Response>;
+
+    /// [`Model::pull_to`] under force control: pulls until the force reaches
     /// `max_force_scaled`·(2πn)²B (the paper pulls to 3).
     ///
     /// # Errors
-    /// If the model cannot represent the spring, or `max_force_scaled` is not
-    /// positive and finite; each model documents its own.
-    fn pull(&self, spring: &Spring, max_force_scaled: f64) -> Result<Response>;
+    /// As [`Model::pull_to`].
+    fn pull(&self, spring: &Spring, max_force_scaled: f64) -> Result<Response> {
+        self.pull_to(spring, Target::Force(max_force_scaled))
+    }
 }
+
+/// Largest number of samples a model draws its curve with: 10⁷ points
+/// (240 MB of curve), far beyond any plot, and an allocation a caller can
+/// make.
+pub const MAX_SAMPLES: usize = 10_000_000;
 
 pub(crate) fn check_samples(samples: usize) -> Result<usize> {
-    if samples >= 2 {
+    if (2..=MAX_SAMPLES).contains(&samples) {
         Ok(samples)
     } else {
-        Err(crate::Error::InvalidCount {
+        Err(Error::InvalidCount {
             name: "samples",
             value: samples as u64,
-            allowed: "at least 2 points",
+            allowed: "2 to 10⁷ points (spring::MAX_SAMPLES)",
         })
     }
 }
 
-pub(crate) fn check_target(max_force_scaled: f64) -> Result<f64> {
-    if max_force_scaled.is_finite() && max_force_scaled > 0.0 {
-        Ok(max_force_scaled)
-    } else {
-        Err(crate::Error::InvalidArgument {
-            name: "max_force_scaled",
-            value: max_force_scaled,
-            allowed: "a positive, finite force in units of (2πn)²B",
-        })
+/// The target of a model that assumes the spring keeps its intrinsic
+/// helix (the helix and the elastica): validated against the rest
+/// extension cos θ0, pulling only.
+pub(crate) fn check_simple_target(
+    model: &'static str,
+    spring: &Spring,
+    target: Target,
+) -> Result<Target> {
+    if !spring.is_helical() {
+        return Err(Error::OutsideModel {
+            model,
+            assumption: "the spring's intrinsic strains must be those of its helix \
+                         (u10 = 0, u20 = 2πn sin θ0, u30 = 2πn cos θ0); use RodModel",
+        });
     }
+    let target = target.validate(spring.helix_angle().cos())?;
+    let pulls = match target {
+        Target::Force(f) => f > 0.0,
+        Target::Extension(dz) => dz > spring.helix_angle().cos(),
+    };
+    if !pulls {
+        return Err(Error::OutsideModel {
+            model,
+            assumption: "the model answers pulls (a positive force, an extension above rest); \
+                         use RodModel to push",
+        });
+    }
+    Ok(target)
 }

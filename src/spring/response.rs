@@ -8,8 +8,10 @@
 
 use core::ops::Range;
 
+use crate::continuation::Termination;
 use crate::curve::{Fold, FoldKind, ForceExtension, ForcePoint};
-use crate::rod::Control;
+use crate::error::{Error, Result};
+use crate::load::{Control, Target};
 
 /// Loading (the controlled quantity increases) or unloading.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -74,80 +76,123 @@ pub struct BranchMatch {
 }
 
 /// A model's answer to a pull: the force–extension curve in the order the
-/// model traced it, its folds, and (where the model counts them) the loops
-/// at every point.
+/// model traced it, its folds, the loop count at every point, and why the
+/// pull ended.
+///
+/// One vocabulary for every model:
+///
+/// - a **fold** is a turning point of the force or of the extension along
+///   the curve ([`Fold`]); models that locate the folds of the controlled
+///   load (continuation) report those, the others are found on the curve;
+/// - the **loop count** of a point is the number of loops of its shape
+///   ([`crate::rod::Equilibrium::loops`]): n on the helix and on the flat
+///   primary branch, `None` where the shape leaves its plane;
+/// - a **pop-out** is a maximum-force fold followed by the next
+///   minimum-force fold across which the spring loses loops (known counts,
+///   fewer after than before): an exact helix has force folds but never
+///   pops a loop;
+/// - a **stretch** is a piece of the curve between pop-outs, with the most
+///   common known loop count of its points.
 #[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Response {
     model: String,
+    target: Target,
     curve: ForceExtension,
     folds: Vec<Fold>,
-    loops: Option<Vec<u32>>,
-    stopped_early: Option<String>,
+    loops: Vec<Option<u32>>,
+    termination: Termination,
 }
 
 impl Response {
-    /// A pull whose folds are found on the curve itself: local extrema of
-    /// force and of extension, each refined by the parabola through the
-    /// three points around it.
+    /// A model's answer to a pull to `target`: `curve` in the order the
+    /// model traced it, how the run ended, and the folds found on the curve
+    /// itself (local extrema of force and extension, each refined by the
+    /// parabola through the three points around it). No loop counts until
+    /// [`Response::with_loops`].
     #[must_use]
-    pub fn from_curve(model: impl Into<String>, curve: ForceExtension) -> Self {
+    pub fn new(
+        model: impl Into<String>,
+        target: Target,
+        curve: ForceExtension,
+        termination: Termination,
+    ) -> Self {
         let folds = curve.folds();
+        let loops = vec![None; curve.len()];
         Self {
             model: model.into(),
+            target,
             curve,
             folds,
-            loops: None,
-            stopped_early: None,
+            loops,
+            termination,
         }
     }
 
-    /// A pull whose folds the model located itself (e.g. by continuation).
-    #[must_use]
-    pub fn with_folds(
-        model: impl Into<String>,
-        curve: ForceExtension,
-        mut folds: Vec<Fold>,
-    ) -> Self {
-        folds.sort_by_key(|f| f.index);
-        Self {
-            model: model.into(),
-            curve,
-            folds,
-            loops: None,
-            stopped_early: None,
+    /// The same pull with the folds of the controlled load that the model
+    /// located itself (e.g. by continuation), replacing those of the same
+    /// kinds found on the curve.
+    ///
+    /// # Errors
+    /// [`Error::InvalidCount`] if a fold's index is past the end of the
+    /// curve.
+    pub fn with_folds(mut self, located: Vec<Fold>) -> Result<Self> {
+        if let Some(bad) = located.iter().find(|f| f.index >= self.curve.len()) {
+            return Err(Error::InvalidCount {
+                name: "fold index",
+                value: bad.index as u64,
+                allowed: "an index of a curve point (below the curve's length)",
+            });
         }
+        let controlled = |k: FoldKind| match self.target.control() {
+            Control::Force => matches!(k, FoldKind::MaxForce | FoldKind::MinForce),
+            Control::Extension => matches!(k, FoldKind::MaxExtension | FoldKind::MinExtension),
+        };
+        self.folds.retain(|f| !controlled(f.kind));
+        self.folds.extend(located);
+        self.folds.sort_by_key(|f| f.index);
+        Ok(self)
     }
 
     /// The same pull with a loop count for every curve point.
     ///
-    /// Counts are ignored (the pull keeps none) unless there is one per point.
-    #[must_use]
-    pub fn with_loops(mut self, loops: Vec<u32>) -> Self {
-        if loops.len() == self.curve.len() {
-            self.loops = Some(loops);
+    /// # Errors
+    /// [`Error::LengthMismatch`] unless there is one count per point.
+    pub fn with_loops(mut self, loops: Vec<Option<u32>>) -> Result<Self> {
+        if loops.len() != self.curve.len() {
+            return Err(Error::LengthMismatch {
+                name: "loops",
+                found: loops.len() as u64,
+                expected: self.curve.len() as u64,
+            });
         }
-        self
-    }
-
-    /// The same pull, marked as ended before its target, with the model's
-    /// reason (a failed run keeps every point it computed).
-    #[must_use]
-    pub fn with_early_stop(mut self, reason: impl Into<String>) -> Self {
-        self.stopped_early = Some(reason.into());
-        self
-    }
-
-    /// Why the model stopped before the target force, if it did.
-    #[must_use]
-    pub fn stopped_early(&self) -> Option<&str> {
-        self.stopped_early.as_deref()
+        self.loops = loops;
+        Ok(self)
     }
 
     /// The model that answered.
     #[must_use]
     pub fn model(&self) -> &str {
         &self.model
+    }
+
+    /// The target of the pull.
+    #[must_use]
+    pub fn target(&self) -> Target {
+        self.target
+    }
+
+    /// Why the pull ended: [`Termination::ParameterValue`] when its last
+    /// point is the target; otherwise the typed reason it stopped early
+    /// (every point so far is kept).
+    #[must_use]
+    pub fn termination(&self) -> &Termination {
+        &self.termination
+    }
+
+    /// Whether the last point is the target.
+    #[must_use]
+    pub fn reached_target(&self) -> bool {
+        matches!(self.termination, Termination::ParameterValue(_))
     }
 
     /// The force–extension curve.
@@ -162,16 +207,35 @@ impl Response {
         &self.folds
     }
 
-    /// The loop count at every curve point, where the model counts loops.
+    /// The loop count at every curve point (`None` where it is not defined
+    /// or the model does not count).
     #[must_use]
-    pub fn loops(&self) -> Option<&[u32]> {
-        self.loops.as_deref()
+    pub fn loops(&self) -> &[Option<u32>] {
+        &self.loops
     }
 
-    /// The pop-outs: each maximum-force fold paired with the next
-    /// minimum-force fold.
+    /// The pop-outs (type docs), in curve order.
     #[must_use]
     pub fn pop_outs(&self) -> Vec<PopOut> {
+        let pairs = self.force_fold_pairs();
+        let mut out = Vec::new();
+        let mut from = 0;
+        for (i, &(max, min)) in pairs.iter().enumerate() {
+            let until = pairs.get(i + 1).map_or(self.curve.len(), |p| p.0.index + 1);
+            let before = mode(&self.loops[from..=max.index.min(self.loops.len() - 1)]);
+            let after = mode(&self.loops[(min.index + 1).min(until)..until]);
+            if let (Some(b), Some(a)) = (before, after)
+                && a < b
+            {
+                out.push(PopOut { max, min });
+                from = (min.index + 1).min(until);
+            }
+        }
+        out
+    }
+
+    /// Every maximum-force fold paired with the next minimum-force fold.
+    fn force_fold_pairs(&self) -> Vec<(Fold, Fold)> {
         let mut out = Vec::new();
         let mut pending: Option<Fold> = None;
         for fold in &self.folds {
@@ -179,7 +243,7 @@ impl Response {
                 FoldKind::MaxForce => pending = Some(*fold),
                 FoldKind::MinForce => {
                     if let Some(max) = pending.take() {
-                        out.push(PopOut { max, min: *fold });
+                        out.push((max, *fold));
                     }
                 }
                 FoldKind::MaxExtension | FoldKind::MinExtension => {}
@@ -194,16 +258,26 @@ impl Response {
         let mut cuts = vec![0];
         for p in self.pop_outs() {
             cuts.push(p.max.index + 1);
-            cuts.push(p.min.index);
+            cuts.push(p.min.index + 1);
         }
         cuts.push(self.curve.len());
         cuts.chunks(2)
             .filter(|c| c[0] < c[1])
             .map(|c| Stretch {
                 range: c[0]..c[1],
-                loops: self.loops.as_ref().and_then(|l| mode(&l[c[0]..c[1]])),
+                loops: mode(&self.loops[c[0]..c[1]]),
             })
             .collect()
+    }
+
+    /// Loops lost from the first stretch to the last (negative if the spring
+    /// gained loops), where both counts are known.
+    #[must_use]
+    pub fn loops_lost(&self) -> Option<i64> {
+        let s = self.stretches();
+        let first = s.first()?.loops?;
+        let last = s.last()?.loops?;
+        Some(i64::from(first) - i64::from(last))
     }
 
     /// The jumps a quasi-static test makes under `control`, loading from the
@@ -314,16 +388,17 @@ impl core::fmt::Display for Response {
             self.folds.len(),
             self.pop_outs().len()
         )?;
-        match &self.stopped_early {
-            Some(reason) => write!(f, " (stopped early: {reason})"),
-            None => Ok(()),
+        if self.reached_target() {
+            Ok(())
+        } else {
+            write!(f, " (stopped early: {})", self.termination)
         }
     }
 }
 
-/// The most common value (the smallest of equally common ones).
-fn mode(values: &[u32]) -> Option<u32> {
-    let mut sorted = values.to_vec();
+/// The most common known value (the smallest of equally common ones).
+fn mode(values: &[Option<u32>]) -> Option<u32> {
+    let mut sorted: Vec<u32> = values.iter().flatten().copied().collect();
     sorted.sort_unstable();
     let mut best: Option<(u32, usize)> = None;
     for run in sorted.chunk_by(|a, b| a == b) {
@@ -379,7 +454,7 @@ mod tests {
     /// (F = ±2); under force control loading jumps from t = −1 to t = 2
     /// ((t − 2)(t + 1)² = 0) and unloading from t = 1 to t = −2.
     fn s_curve(points: usize) -> Response {
-        let mut c = ForceExtension::new("s", "t", 1).unwrap();
+        let mut c = ForceExtension::new("s", "t", crate::ForceScale::of_coils(1).unwrap());
         for i in 0..points {
             let t = -3.0 + 6.0 * i as f64 / (points - 1) as f64;
             c.push(ForcePoint {
@@ -388,7 +463,12 @@ mod tests {
                 parameter: t,
             });
         }
-        Response::from_curve("test", c)
+        Response::new(
+            "test",
+            Target::Force(5.0),
+            c,
+            Termination::ParameterValue(18.0),
+        )
     }
 
     #[test]
@@ -401,7 +481,8 @@ mod tests {
         assert!((pull.folds()[0].point.extension + 1.0).abs() < 1e-4);
         assert!((pull.folds()[0].point.force - 2.0).abs() < 1e-7);
         assert!((pull.folds()[1].point.extension - 1.0).abs() < 1e-4);
-        assert_eq!(pull.pop_outs().len(), 1);
+        // Folds without a loop lost are no pop-out.
+        assert!(pull.pop_outs().is_empty());
     }
 
     #[test]
@@ -428,13 +509,30 @@ mod tests {
     fn stretches_split_at_pop_outs_and_carry_loop_counts() {
         let pull = s_curve(601);
         let n = pull.curve().len();
-        let loops: Vec<u32> = (0..n).map(|i| if i < 300 { 2 } else { 1 }).collect();
-        let pull = pull.with_loops(loops);
+        let loops: Vec<_> = (0..n).map(|i| Some(if i < 300 { 2 } else { 1 })).collect();
+        let pull = pull.with_loops(loops).unwrap();
+        assert_eq!(pull.pop_outs().len(), 1);
+        assert_eq!(pull.loops_lost(), Some(1));
         let stretches = pull.stretches();
         assert_eq!(stretches.len(), 2);
         assert_eq!(stretches[0].loops, Some(2));
         assert_eq!(stretches[1].loops, Some(1));
         assert!(stretches[0].range.end <= stretches[1].range.start);
+    }
+
+    #[test]
+    fn fold_indices_and_loop_counts_must_fit_the_curve() {
+        let pull = s_curve(61);
+        let mut fold = pull.folds()[0];
+        fold.index = 61;
+        assert!(matches!(
+            pull.clone().with_folds(vec![fold]),
+            Err(Error::InvalidCount { .. })
+        ));
+        assert!(matches!(
+            pull.with_loops(vec![Some(1); 60]),
+            Err(Error::LengthMismatch { .. })
+        ));
     }
 
     #[test]

@@ -1,18 +1,20 @@
 //! [`RodModel`]: the full 3D pull by collocation continuation.
 
-use crate::curve::ForceExtension;
-use crate::error::{Error, Result};
-use crate::rod::{self, PullObserver, PullRun, PullTermination, Rod};
+use crate::continuation::Observer;
+use crate::error::Result;
+use crate::load::Target;
+use crate::rod::{Pull, PullRun, Rod};
 
-use super::{Model, Response, Spring, check_target};
+use super::{Model, Response, Spring};
 
 /// The spring as the 3D anisotropic Kirchhoff rod of [`crate::rod`],
-/// pulled from its unstressed helix by pseudo-arclength continuation in the
-/// force. Folds are located by the continuation; every point carries its
-/// loop count.
+/// pulled from rest by pseudo-arclength continuation to a force or an
+/// extension. The folds of the controlled load are located by the
+/// continuation; every point carries its loop count.
 ///
-/// Settings are those of [`rod::Pull`]; [`RodModel::default`] uses its
-/// defaults (48 intervals, 4 Gauss points).
+/// Settings are those of [`Pull`]; [`RodModel::default`] uses its defaults
+/// (48 intervals, 4 Gauss points). The rod takes the spring's intrinsic
+/// strains as they are.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct RodModel {
     intervals: Option<usize>,
@@ -34,64 +36,64 @@ impl RodModel {
         self
     }
 
-    /// The rod of a spring.
+    /// The rod of a spring: its coils, helix angle, stiffnesses and
+    /// intrinsic strains.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] if the spring's intrinsic strains are not
-    /// those of its helix (the rod takes them from n and θ0).
+    /// As [`Rod::new`] and [`Rod::with_intrinsic_strains`] (a valid
+    /// [`Spring`] passes both).
     pub fn rod(spring: &Spring) -> Result<Rod> {
-        if !spring.is_helical() {
-            return Err(Error::InvalidArgument {
-                name: "u10",
-                value: spring.intrinsic_strains().x,
-                allowed: "the rod model takes the intrinsic strains of the unstressed helix",
-            });
+        let rod = Rod::new(spring.coils(), spring.helix_angle(), spring.stiffness())?;
+        if spring.is_helical() {
+            Ok(rod)
+        } else {
+            rod.with_intrinsic_strains(spring.intrinsic_strains())
         }
-        let k = spring.stiffness();
-        Rod::new(spring.coils(), spring.helix_angle(), k.a(), k.b(), k.c())
     }
 
-    /// The continuation driver this model runs.
+    /// The continuation driver this model runs, validated ([`Pull::check`]).
     ///
     /// # Errors
-    /// As [`RodModel::rod`].
-    pub fn driver(&self, spring: &Spring, max_force_scaled: f64) -> Result<rod::Pull> {
-        let mut pull = rod::Pull::new(Self::rod(spring)?).to_force_scaled(max_force_scaled);
+    /// As [`RodModel::rod`] and [`Pull::check`].
+    pub fn driver(&self, spring: &Spring, target: Target) -> Result<Pull> {
+        let mut pull = Pull::new(Self::rod(spring)?, target);
         if let Some(n) = self.intervals {
             pull = pull.intervals(n);
         }
         if let Some(m) = self.points {
             pull = pull.points(m);
         }
+        pull.check()?;
         Ok(pull)
     }
 
-    /// Pulls with an observer (progress, cancellation) and returns the
-    /// rod's full record of the run.
+    /// Pulls with an observer of the continuation points (progress,
+    /// cancellation) and returns the spring's [`Response`].
     ///
     /// # Errors
-    /// As [`RodModel::rod`], or a bad target.
-    pub fn run<O: PullObserver>(
+    /// As [`RodModel::driver`] and [`Pull::run`].
+    pub fn pull_observed<O: Observer>(
         &self,
         spring: &Spring,
-        max_force_scaled: f64,
+        target: Target,
         observer: O,
-    ) -> Result<PullRun> {
-        let target = check_target(max_force_scaled)?;
-        Ok(self.driver(spring, target)?.run(observer))
+    ) -> Result<Response> {
+        Self::response(self.driver(spring, target)?.run(observer)?)
     }
 
     /// The spring's [`Response`] from a finished run.
-    #[must_use]
-    pub fn response(run: &PullRun) -> Response {
-        let curve: ForceExtension = run.curve();
-        let folds = run.folds.clone();
-        let loops = run.points.iter().map(|p| p.loops).collect();
-        let response = Response::with_folds("rod", curve, folds).with_loops(loops);
-        match run.termination {
-            PullTermination::ReachedForce => response,
-            ref other => response.with_early_stop(other.to_string()),
-        }
+    ///
+    /// # Errors
+    /// None in practice: the run's folds and loop counts fit its curve.
+    pub fn response(run: PullRun) -> Result<Response> {
+        Response::new(
+            "rod",
+            run.target(),
+            run.curve().clone(),
+            run.termination().clone(),
+        )
+        .with_folds(run.folds().to_vec())?
+        .with_loops(run.loops().to_vec())
     }
 }
 
@@ -102,11 +104,11 @@ impl Model for RodModel {
 
     /// A run that stops before the target (Newton failure at the smallest
     /// step, step limit) still answers, with every point it computed and
-    /// [`Response::stopped_early`] saying why.
+    /// [`Response::termination`] saying why.
     ///
     /// # Errors
-    /// As [`RodModel::rod`], or a bad target.
-    fn pull(&self, spring: &Spring, max_force_scaled: f64) -> Result<Response> {
-        Ok(Self::response(&self.run(spring, max_force_scaled, ())?))
+    /// As [`RodModel::pull_observed`].
+    fn pull_to(&self, spring: &Spring, target: Target) -> Result<Response> {
+        self.pull_observed(spring, target, ())
     }
 }

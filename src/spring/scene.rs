@@ -4,8 +4,9 @@ use core::f64::consts::PI;
 
 use nalgebra::Vector3;
 
+use crate::curve::ForceScale;
 use crate::error::{Error, Result};
-use crate::helix::Stiffness;
+use crate::stiffness::Stiffness;
 
 /// A helical spring of unit length: `n` coils at helix angle θ0 (between the
 /// tangent and the axis), bending stiffnesses A (about d1) and B (about d2)
@@ -76,15 +77,9 @@ impl Spring {
     ///
     /// # Errors
     /// [`Error::InvalidCount`] if `coils` is 0; [`Error::InvalidArgument`] if
-    /// `helix_angle` is not in (0, π/2].
+    /// `helix_angle` is not in (0, π/2] or (2πn)²B overflows.
     pub fn new(coils: u32, helix_angle: f64, stiffness: Stiffness) -> Result<Self> {
-        if coils == 0 {
-            return Err(Error::InvalidCount {
-                name: "coils",
-                value: 0,
-                allowed: "at least one coil",
-            });
-        }
+        ForceScale::new(coils, stiffness.b())?;
         if !(helix_angle > 0.0 && helix_angle <= PI / 2.0) {
             return Err(Error::InvalidArgument {
                 name: "helix_angle",
@@ -179,11 +174,16 @@ impl Spring {
         self.intrinsic == natural
     }
 
-    /// The paper's force scale (2πn)²·B.
+    /// The paper's force scale (2πn)²·B of F/((2πn)²B).
+    #[must_use]
+    pub fn scale(&self) -> ForceScale {
+        ForceScale::new(self.coils, self.stiffness.b()).expect("validated by Spring::new")
+    }
+
+    /// (2πn)²·B, the value of [`Spring::scale`].
     #[must_use]
     pub fn force_scale(&self) -> f64 {
-        let rho = 2.0 * PI * f64::from(self.coils);
-        rho * rho * self.stiffness.b()
+        self.scale().value()
     }
 }
 

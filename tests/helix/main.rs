@@ -6,7 +6,8 @@ mod common;
 
 use common::rel_err;
 use hockle::Error;
-use hockle::helix::{Helix, Stiffness};
+use hockle::Stiffness;
+use hockle::helix::Helix;
 use proptest::prelude::*;
 
 const TABLE: &str = include_str!("../data/helix.csv");

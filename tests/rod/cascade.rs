@@ -1,21 +1,39 @@
 //! The paper's Fig. spring: n = 4, θ0 = 89.8°, A/B = 10, ν = 0.05, pulled
-//! from rest to F/(2πn)² = 3.
+//! from rest to F/((2πn)²B) = 3.
 
 use std::ops::ControlFlow;
 
-use hockle::rod::{Equilibrium, FoldKind, Pull, PullPoint, PullRun, Rod};
+use hockle::continuation::{Point, Termination};
+use hockle::rod::{Equilibrium, Pull, PullRun, Rod};
+use hockle::spring::RodModel;
+use hockle::{FoldKind, Stiffness, Target};
+
+fn nikolai(theta0_deg: f64, a_over_b: f64) -> Rod {
+    Rod::new(
+        4,
+        theta0_deg.to_radians(),
+        Stiffness::nikolai(a_over_b, 0.05).unwrap(),
+    )
+    .unwrap()
+}
 
 fn rod() -> Rod {
-    Rod::nikolai(4, 89.8_f64.to_radians(), 10.0, 0.05).unwrap()
+    nikolai(89.8, 10.0)
 }
 
 fn pull(intervals: usize, drift: &mut f64) -> PullRun {
-    Pull::new(rod())
+    Pull::new(rod(), Target::Force(3.0))
         .intervals(intervals)
-        .run(|e: &Equilibrium, _: &PullPoint| {
+        .run(|p: &Point| {
+            let e = Equilibrium::new(rod(), p.solution().clone()).unwrap();
             *drift = drift.max(e.quaternion_drift());
             ControlFlow::Continue(())
         })
+        .unwrap()
+}
+
+fn reached(run: &PullRun) -> bool {
+    matches!(run.termination(), Termination::ParameterValue(_))
 }
 
 /// Fold positions at the default mesh against twice the resolution: the
@@ -31,13 +49,20 @@ const Q_DRIFT: f64 = 1e-9;
 #[test]
 fn three_pop_outs_converged_with_q_conserved() {
     let mut drift = 0.0;
-    let run = pull(Pull::new(rod()).mesh_intervals(), &mut drift);
+    let run = pull(
+        Pull::new(rod(), Target::Force(3.0)).mesh_intervals(),
+        &mut drift,
+    );
+    assert!(reached(&run), "{run}");
+    // The last point is the target, located like a fold (to 1e-9 in
+    // arclength, where F/((2πn)²B) enters with weight 1).
+    let last = run.curve().points().last().unwrap();
     assert!(
-        matches!(run.termination, hockle::rod::PullTermination::ReachedForce),
+        (last.force_scaled(rod().scale()) - 3.0).abs() < 1e-8,
         "{run}"
     );
     // Three pop-outs: max-force fold then min-force fold, three times.
-    let kinds: Vec<FoldKind> = run.folds.iter().map(|f| f.kind).collect();
+    let kinds: Vec<FoldKind> = run.folds().iter().map(|f| f.kind).collect();
     assert_eq!(
         kinds,
         [
@@ -50,32 +75,31 @@ fn three_pop_outs_converged_with_q_conserved() {
         ],
         "{run}"
     );
-    assert_eq!(run.pop_outs().len(), 3);
-    // 4 → 3 → 2 → 1 loops: the stretch that starts at each minimum-force
-    // fold carries one loop fewer.
-    let stretches = run.stretches();
-    assert_eq!(stretches.first().unwrap().loops, 4, "{run}");
-    let after_min: Vec<u32> = stretches
-        .iter()
-        .skip(2)
-        .step_by(2)
-        .map(|s| s.loops)
-        .collect();
-    assert_eq!(after_min, [3, 2, 1], "{run}");
-    assert_eq!(run.loops_lost(), 3);
+    // 4 → 3 → 2 → 1 loops: each stretch between pop-outs carries one loop
+    // fewer, and no point anywhere counts more loops than the coils.
+    assert!(run.loops().iter().flatten().all(|&l| l <= 4), "{run}");
+    let response = RodModel::response(run.clone()).unwrap();
+    assert_eq!(response.pop_outs().len(), 3);
+    let loops: Vec<Option<u32>> = response.stretches().iter().map(|s| s.loops).collect();
+    assert_eq!(loops, [Some(4), Some(3), Some(2), Some(1)], "{run}");
+    assert_eq!(response.loops_lost(), Some(3));
     assert!(drift < Q_DRIFT, "|q| − 1 = {drift:e}");
 
     // Twice the resolution: the folds agree.
     let mut drift2 = 0.0;
-    let fine = pull(2 * Pull::new(rod()).mesh_intervals(), &mut drift2);
-    assert_eq!(fine.folds.len(), run.folds.len());
-    for (a, b) in run.folds.iter().zip(&fine.folds) {
+    let fine = pull(
+        2 * Pull::new(rod(), Target::Force(3.0)).mesh_intervals(),
+        &mut drift2,
+    );
+    assert_eq!(fine.folds().len(), run.folds().len());
+    let scale = rod().scale();
+    for (a, b) in run.folds().iter().zip(fine.folds()) {
         assert!(
             (a.point.extension - b.point.extension).abs() < FOLD_CONVERGED,
             "{a} vs {b}"
         );
         assert!(
-            (a.point.force_scaled(4) - b.point.force_scaled(4)).abs() < FOLD_CONVERGED,
+            (a.point.force_scaled(scale) - b.point.force_scaled(scale)).abs() < FOLD_CONVERGED,
             "{a} vs {b}"
         );
     }
@@ -85,12 +109,11 @@ fn three_pop_outs_converged_with_q_conserved() {
 fn extension_control_traces_the_same_curve_and_jumps_at_extension_folds() {
     // Under a hard device (Δz prescribed) the first pop-out needs no jump
     // (Δz stays monotone through it) and the second one is a fold in Δz.
-    let run = Pull::new(rod()).extension_control(0.7).run(());
-    assert!(
-        matches!(run.termination, hockle::rod::PullTermination::ReachedForce),
-        "{run}"
-    );
-    let kinds: Vec<FoldKind> = run.folds.iter().map(|f| f.kind).collect();
+    let run = Pull::new(rod(), Target::Extension(0.7)).run(()).unwrap();
+    assert!(reached(&run), "{run}");
+    // Located to 1e-9 in arclength, where Δz enters with weight 1.
+    assert!((run.curve().points().last().unwrap().extension - 0.7).abs() < 1e-8);
+    let kinds: Vec<FoldKind> = run.folds().iter().map(|f| f.kind).collect();
     assert_eq!(
         kinds,
         [FoldKind::MaxExtension, FoldKind::MinExtension],
@@ -102,15 +125,16 @@ fn extension_control_traces_the_same_curve_and_jumps_at_extension_folds() {
     // test's value at this mesh), within the sampling of the run (steps
     // ≤ 0.02 in the norm: a quadratic maximum is missed by ≲ 1e-4).
     let fmax = run
-        .points
+        .curve()
+        .points()
         .iter()
         .take_while(|p| p.extension < 0.45)
-        .map(|p| p.force_scaled)
+        .map(|p| p.force_scaled(rod().scale()))
         .fold(0.0, f64::max);
     assert!((fmax - 0.602_621).abs() < 1e-3, "{fmax}");
     // And the Δz fold sits next to the second force fold (Δz = 0.631767).
     assert!(
-        (run.folds[0].point.extension - 0.631_767).abs() < 1e-3,
+        (run.folds()[0].point.extension - 0.631_767).abs() < 1e-3,
         "{run}"
     );
 }
@@ -120,13 +144,11 @@ fn no_cascade_at_large_pitch_or_without_anisotropy() {
     // The paper's Figs. helix and aniso: at θ0 = 60° and for the isotropic
     // rod (A/B = 1) the spring unwinds without pop-outs (no folds at all).
     for (theta0, a_over_b) in [(60.0_f64, 10.0), (89.8, 1.0)] {
-        let rod = Rod::nikolai(4, theta0.to_radians(), a_over_b, 0.05).unwrap();
-        let run = Pull::new(rod).run(());
-        assert!(
-            matches!(run.termination, hockle::rod::PullTermination::ReachedForce),
-            "{run}"
-        );
-        assert!(run.folds.is_empty(), "{run}");
+        let run = Pull::new(nikolai(theta0, a_over_b), Target::Force(3.0))
+            .run(())
+            .unwrap();
+        assert!(reached(&run), "{run}");
+        assert!(run.folds().is_empty(), "{run}");
     }
 }
 
@@ -136,18 +158,17 @@ fn the_slinky_overwinds_and_the_isotropic_spring_unwinds() {
     // tension, the isotropic rod unwinds like a helix. Measured at
     // F/(2πn)² = 0.6: 5.18 and 3.0 turns about the axis (4 at rest).
     let turns_at = |a_over_b: f64| {
-        let rod = Rod::nikolai(4, 89.8_f64.to_radians(), a_over_b, 0.05).unwrap();
+        let rod = nikolai(89.8, a_over_b);
         let mut last = 0.0;
-        let run = Pull::new(rod)
-            .to_force_scaled(0.6)
-            .run(|e: &Equilibrium, _: &PullPoint| {
-                last = e.axial_turns();
+        let run = Pull::new(rod, Target::Force(0.6))
+            .run(|p: &Point| {
+                last = Equilibrium::new(rod, p.solution().clone())
+                    .unwrap()
+                    .axial_turns();
                 ControlFlow::Continue(())
-            });
-        assert!(
-            matches!(run.termination, hockle::rod::PullTermination::ReachedForce),
-            "{run}"
-        );
+            })
+            .unwrap();
+        assert!(reached(&run), "{run}");
         last
     };
     assert!(turns_at(0.1) > 5.0);
@@ -196,14 +217,14 @@ fn the_gauge_makes_no_branch_points_and_both_continuations_agree() {
         .folds()
         .map(|p| Equilibrium::new(rod, p.solution().clone()).unwrap())
         .collect();
-    let run = Pull::new(rod).run(());
-    assert_eq!(folds.len(), run.folds.len());
+    let run = Pull::new(rod, Target::Force(3.0)).run(()).unwrap();
+    assert_eq!(folds.len(), run.folds().len());
     // Both locate to ≤ 1e-9 in arclength on the same mesh: measured
     // agreement < 1e-6 in both coordinates.
-    for (a, b) in folds.iter().zip(&run.folds) {
+    for (a, b) in folds.iter().zip(run.folds()) {
         assert!((a.extension() - b.point.extension).abs() < 1e-5, "{b}");
         assert!(
-            (a.force_scaled() - b.point.force_scaled(4)).abs() < 1e-5,
+            (a.force_scaled() - b.point.force_scaled(rod.scale())).abs() < 1e-5,
             "{b}"
         );
     }

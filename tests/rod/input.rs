@@ -3,65 +3,149 @@
 
 use std::ops::ControlFlow;
 
-use hockle::Error;
-use hockle::rod::{Equilibrium, Pull, PullPoint, PullTermination, Rod};
+use hockle::continuation::{Point, Termination};
+use hockle::rod::{Pull, Rod};
+use hockle::{Error, Stiffness, Target};
+
+fn paper() -> Rod {
+    Rod::new(
+        4,
+        89.8_f64.to_radians(),
+        Stiffness::nikolai(10.0, 0.05).unwrap(),
+    )
+    .unwrap()
+}
 
 #[test]
 fn invalid_rods_are_errors() {
+    let k = Stiffness::new(1.0, 1.0, 1.0).unwrap();
     assert!(matches!(
-        Rod::new(0, 1.0, 1.0, 1.0, 1.0),
+        Rod::new(0, 1.0, k),
         Err(Error::InvalidCount { name: "coils", .. })
     ));
     for theta0 in [0.0, -0.1, 1.6, f64::NAN] {
         assert!(matches!(
-            Rod::new(4, theta0, 1.0, 1.0, 1.0),
-            Err(Error::InvalidArgument { name: "theta0", .. })
+            Rod::new(4, theta0, k),
+            Err(Error::InvalidArgument {
+                name: "helix_angle",
+                ..
+            })
         ));
     }
-    for bad in [0.0, -1.0, f64::INFINITY, f64::NAN] {
-        assert!(Rod::new(4, 1.0, bad, 1.0, 1.0).is_err());
-        assert!(Rod::new(4, 1.0, 1.0, bad, 1.0).is_err());
-        assert!(Rod::new(4, 1.0, 1.0, 1.0, bad).is_err());
+    // (2πn)²B must be finite.
+    let huge = Stiffness::new(1.0, 1e306, 1.0).unwrap();
+    assert!(Rod::new(u32::MAX, 1.0, huge).is_err());
+    for bad in [f64::NAN, f64::INFINITY] {
+        assert!(
+            paper()
+                .with_intrinsic_strains(hockle::nalgebra::Vector3::new(0.0, bad, 1.0))
+                .is_err()
+        );
     }
-    assert!(Rod::nikolai(4, 1.0, 10.0, 0.6).is_err());
-    assert!(Rod::nikolai(4, 1.0, -10.0, 0.05).is_err());
 }
 
 #[test]
-fn bad_pull_settings_end_the_run_with_the_reason() {
-    let rod = Rod::nikolai(4, 89.8_f64.to_radians(), 10.0, 0.05).unwrap();
-    let run = Pull::new(rod).intervals(0).run(());
+fn bad_pull_settings_are_typed_errors_before_any_work() {
+    let target = Target::Force(3.0);
     assert!(matches!(
-        run.termination,
-        PullTermination::StartFailed(Error::InvalidCount { .. })
+        Pull::new(paper(), target).intervals(0).run(()),
+        Err(Error::InvalidCount { .. })
     ));
-    assert!(run.points.is_empty());
-    let run = Pull::new(rod).step(1.0, 1e-7, 0.02).run(());
     assert!(matches!(
-        run.termination,
-        PullTermination::StartFailed(Error::InvalidArgument { name: "ds", .. })
+        Pull::new(paper(), target).points(8).run(()),
+        Err(Error::InvalidCount { name: "points", .. })
     ));
+    assert!(matches!(
+        Pull::new(paper(), target).step(1.0, 1e-7, 0.02).run(()),
+        Err(Error::InvalidArgument { name: "step", .. })
+    ));
+    assert!(matches!(
+        Pull::new(paper(), target).max_angle(f64::NAN).run(()),
+        Err(Error::InvalidArgument {
+            name: "max_angle",
+            ..
+        })
+    ));
+    // Unreachable targets: the rest state itself, Δz ≥ 1, NaN.
+    let rest = 89.8_f64.to_radians().cos();
+    for t in [
+        Target::Force(0.0),
+        Target::Force(f64::NAN),
+        Target::Extension(1.0),
+        Target::Extension(rest),
+        Target::Extension(f64::INFINITY),
+    ] {
+        assert!(
+            matches!(
+                Pull::new(paper(), t).run(()),
+                Err(Error::UnreachableTarget { .. })
+            ),
+            "{t}"
+        );
+    }
+    // θ0 = 90°: the ring closes on itself; a typed error, not an empty run.
+    let ring = Rod::new(
+        4,
+        90_f64.to_radians(),
+        Stiffness::nikolai(10.0, 0.05).unwrap(),
+    )
+    .unwrap();
+    assert!(matches!(
+        Pull::new(ring, target).run(()),
+        Err(Error::OutsideModel { model: "rod", .. })
+    ));
+}
+
+#[test]
+fn small_targets_are_met_exactly() {
+    // Below the load that sets the first step (1e-4): the old pull stepped
+    // past such targets and ran to the step limit.
+    for f in [5e-5, 1e-7] {
+        let run = Pull::new(paper(), Target::Force(f)).run(()).unwrap();
+        assert!(
+            matches!(run.termination(), Termination::ParameterValue(_)),
+            "{run}"
+        );
+        let last = run.curve().points().last().unwrap();
+        // Located to 1e-9 in arclength, where F/((2πn)²B) has weight 1.
+        assert!(
+            (last.force_scaled(paper().scale()) - f).abs() < 1e-9,
+            "{run}"
+        );
+        assert!(run.steps() < 20, "{run}");
+    }
+    let dz = 89.8_f64.to_radians().cos() + 1e-6;
+    let run = Pull::new(paper(), Target::Extension(dz)).run(()).unwrap();
+    assert!(
+        matches!(run.termination(), Termination::ParameterValue(_)),
+        "{run}"
+    );
+    assert!((run.curve().points().last().unwrap().extension - dz).abs() < 1e-9);
 }
 
 #[test]
 fn a_stopped_pull_keeps_its_points() {
-    let rod = Rod::nikolai(4, 89.8_f64.to_radians(), 10.0, 0.05).unwrap();
     let mut seen = 0;
-    let run = Pull::new(rod).run(|_: &Equilibrium, _: &PullPoint| {
-        seen += 1;
-        if seen == 25 {
-            ControlFlow::Break(())
-        } else {
-            ControlFlow::Continue(())
-        }
-    });
-    assert_eq!(run.termination, PullTermination::Stopped);
-    assert_eq!(run.points.len(), 25);
+    let run = Pull::new(paper(), Target::Force(3.0))
+        .run(|_: &Point| {
+            seen += 1;
+            if seen == 25 {
+                ControlFlow::Break(())
+            } else {
+                ControlFlow::Continue(())
+            }
+        })
+        .unwrap();
+    assert_eq!(run.termination(), &Termination::Stopped);
     assert_eq!(run.curve().len(), 25);
+    assert_eq!(run.loops().len(), 25);
     // The step limit is a termination too.
-    let run = Pull::new(rod).max_steps(10).run(());
-    assert_eq!(run.termination, PullTermination::MaxSteps(10));
-    assert_eq!(run.points.len(), 12); // the start, the first secant point, 10 steps
+    let run = Pull::new(paper(), Target::Force(3.0))
+        .max_steps(10)
+        .run(())
+        .unwrap();
+    assert_eq!(run.termination(), &Termination::MaxSteps(10));
+    assert_eq!(run.curve().len(), 11); // the rest state and 10 steps
 }
 
 #[test]
@@ -89,9 +173,9 @@ fn equilibrium_rejects_foreign_solutions() {
         .intervals(2)
         .solve(&Scalar, |_s: f64| [1.0], &[])
         .unwrap();
-    let rod = Rod::nikolai(4, 1.0, 10.0, 0.05).unwrap();
+    let rod = paper();
     assert!(matches!(
-        Equilibrium::new(rod, sol),
+        hockle::rod::Equilibrium::new(rod, sol),
         Err(Error::InvalidCount { .. })
     ));
 }

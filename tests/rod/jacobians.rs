@@ -1,8 +1,9 @@
 //! Analytic Jacobians against central finite differences.
 
+use hockle::Control;
 use hockle::bvp::Problem;
 use hockle::nalgebra::DMatrix;
-use hockle::rod::{Control, Rod};
+use hockle::rod::Rod;
 
 /// Central differences with step h have truncation error h²|f‴|/6 and
 /// rounding ε|f|/h. The rhs is a polynomial of degree ≤ 4 in y (R quadratic
@@ -56,11 +57,16 @@ fn check(name: &str, analytic: &DMatrix<f64>, fd: &DMatrix<f64>) {
 }
 
 fn rods() -> Vec<Rod> {
-    let r = Rod::nikolai(4, 89.8_f64.to_radians(), 10.0, 0.05).unwrap();
+    let r = Rod::new(
+        4,
+        89.8_f64.to_radians(),
+        hockle::Stiffness::nikolai(10.0, 0.05).unwrap(),
+    )
+    .unwrap();
     vec![
         r,
         r.with_control(Control::Extension),
-        Rod::new(2, 1.0, 0.3, 1.7, 2.2).unwrap(),
+        Rod::new(2, 1.0, hockle::Stiffness::new(0.3, 1.7, 2.2).unwrap()).unwrap(),
     ]
 }
 

@@ -7,10 +7,11 @@
 
 use core::f64::consts::PI;
 
+use hockle::Control;
 use hockle::bvp::Collocation;
 use hockle::continuation::{Continuation, PointKind};
 use hockle::elastica::Elastica;
-use hockle::rod::{Control, Equilibrium, Rod};
+use hockle::rod::{Equilibrium, Rod};
 
 /// Collocation with m = 4 on 100 uniform intervals: the error at mesh
 /// points is O(h⁸) ≈ (κ_max h)⁸ with κ_max ≲ 40 → (0.4)⁸ · C ≈ 1e-4·C …
@@ -89,7 +90,7 @@ fn planar_guess(f: f64, delta: f64) -> impl Fn(f64) -> [f64; 13] {
 
 #[test]
 fn planar_solutions_are_the_elastica_to_1e_8_in_force() {
-    let rod = Rod::nikolai(4, PI / 2.0, 10.0, 0.05)
+    let rod = Rod::new(4, PI / 2.0, hockle::Stiffness::nikolai(10.0, 0.05).unwrap())
         .unwrap()
         .with_control(Control::Extension);
     let solver = Collocation::new().intervals(100);
@@ -109,7 +110,7 @@ fn planar_solutions_are_the_elastica_to_1e_8_in_force() {
         );
         // Planar to rounding, one loop count of 4, |q| conserved.
         assert!(e.planarity() < 1e-12, "planarity {:e}", e.planarity());
-        assert_eq!(e.loops(), 4);
+        assert_eq!(e.loops(), Some(4));
         assert!(e.quaternion_drift() < 1e-12);
     }
 }
@@ -151,7 +152,7 @@ fn planar_branch_is_the_elastica_and_has_its_out_of_plane_branch_point() {
     // branch points (sign changes of the bordered Jacobian's determinant).
     let scale = (8.0 * PI).powi(2);
     let row = table().into_iter().nth(2).unwrap();
-    let rod = Rod::nikolai(4, PI / 2.0, 10.0, 0.05).unwrap();
+    let rod = Rod::new(4, PI / 2.0, hockle::Stiffness::nikolai(10.0, 0.05).unwrap()).unwrap();
     // 128 intervals: the O(h⁸) error at the mesh points is 2e-8 relative
     // with 64 intervals at F/(2πn)² ≈ 1.1 (tight hockles), 256× less here.
     let solver = Collocation::new().intervals(128);
@@ -215,28 +216,36 @@ fn planar_branch_is_the_elastica_and_has_its_out_of_plane_branch_point() {
 /// out-of-plane ones (the paper's diamonds).
 #[test]
 fn secondary_branches_branch_where_the_elastica_says() {
+    use hockle::Target;
     use hockle::bvp::Solution;
-    use hockle::rod::{Pull, PullPoint};
+    use hockle::continuation::Point;
+    use hockle::rod::Pull;
     use std::ops::ControlFlow;
 
     let scale = (8.0 * PI).powi(2);
-    let rod = Rod::nikolai(4, 89.8_f64.to_radians(), 10.0, 0.05).unwrap();
+    let rod = Rod::new(
+        4,
+        89.8_f64.to_radians(),
+        hockle::Stiffness::nikolai(10.0, 0.05).unwrap(),
+    )
+    .unwrap();
     let mut best: Vec<Option<(f64, Solution)>> = vec![None; 5];
-    let _ =
-        Pull::new(rod)
-            .intervals(64)
-            .to_force_scaled(1.3)
-            .run(|e: &Equilibrium, p: &PullPoint| {
-                let l = p.loops as usize;
-                if (2..=3).contains(&l)
-                    && p.force_scaled > 0.1
-                    && best[l].as_ref().is_none_or(|b| p.planarity < b.0)
-                {
-                    best[l] = Some((p.planarity, e.solution().clone()));
-                }
-                ControlFlow::Continue(())
-            });
-    let rod90 = Rod::nikolai(4, PI / 2.0, 10.0, 0.05).unwrap();
+    Pull::new(rod, Target::Force(1.3))
+        .intervals(64)
+        .run(|p: &Point| {
+            let e = Equilibrium::new(rod, p.solution().clone()).unwrap();
+            let planarity = e.planarity();
+            if let Some(l) = e.loops().map(|l| l as usize)
+                && (2..=3).contains(&l)
+                && e.force_scaled() > 0.1
+                && best[l].as_ref().is_none_or(|b| planarity < b.0)
+            {
+                best[l] = Some((planarity, e.solution().clone()));
+            }
+            ControlFlow::Continue(())
+        })
+        .unwrap();
+    let rod90 = Rod::new(4, PI / 2.0, hockle::Stiffness::nikolai(10.0, 0.05).unwrap()).unwrap();
     let mut w = vec![1.0; 13];
     w[7..10].fill(1.0 / (scale * scale));
     w[10..13].fill(1e-3);
@@ -246,7 +255,7 @@ fn secondary_branches_branch_where_the_elastica_says() {
         p[Rod::THETA0] = PI / 2.0;
         let start = Collocation::new().solve(&rod90, sol, &p).unwrap();
         let e = Equilibrium::new(rod90, start.clone()).unwrap();
-        assert!(e.planarity() < 1e-12 && e.loops() == j);
+        assert!(e.planarity() < 1e-12 && e.loops() == Some(j));
         let branch = Continuation::new(Rod::FORCE)
             .weights(&w)
             .parameter_weight(1.0 / (scale * scale))

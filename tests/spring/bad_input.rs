@@ -1,7 +1,7 @@
 //! Bad input gives typed errors that name the value.
 
 use hockle::Error;
-use hockle::helix::Stiffness;
+use hockle::Stiffness;
 use hockle::nalgebra::Vector3;
 use hockle::spring::{ElasticaModel, HelixModel, Model, RodModel, Spring};
 
@@ -37,14 +37,11 @@ fn every_model_rejects_a_bad_target() {
         &RodModel::default(),
     ];
     for model in models {
-        for target in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        for target in [0.0, f64::NAN, f64::INFINITY] {
             assert!(
                 matches!(
                     model.pull(&spring, target),
-                    Err(Error::InvalidArgument {
-                        name: "max_force_scaled",
-                        ..
-                    })
+                    Err(Error::UnreachableTarget { .. })
                 ),
                 "{} accepted {target}",
                 model.name()
@@ -58,6 +55,18 @@ fn models_that_assume_helical_strains_refuse_others() {
     let spring = Spring::paper()
         .with_intrinsic_strains(Vector3::new(1.0, 25.0, 0.0))
         .unwrap();
-    assert!(HelixModel::default().pull(&spring, 1.0).is_err());
-    assert!(RodModel::default().pull(&spring, 1.0).is_err());
+    for model in [
+        &HelixModel::default() as &dyn Model,
+        &ElasticaModel::default(),
+    ] {
+        assert!(matches!(
+            model.pull(&spring, 1.0),
+            Err(Error::OutsideModel { .. })
+        ));
+        // Pushing is outside what they model too.
+        assert!(matches!(
+            model.pull(&Spring::paper(), -1.0),
+            Err(Error::OutsideModel { .. })
+        ));
+    }
 }
