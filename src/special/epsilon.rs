@@ -3,7 +3,7 @@
 use super::Modulus;
 use super::carlson::rd;
 use super::complete::ellip_e;
-use super::jacobi::{Reduced, reduce_2k, sncndn_small};
+use super::jacobi::{Reduced, reduce_2k, sncndn_quarter};
 
 /// cd = cn/dn on [0, K/2] as √(1 − m₁ sd²) (m₁ sd² ≤ ½ there): the quotient
 /// of two values computed apart would carry both their errors when m → 1.
@@ -35,14 +35,14 @@ fn epsilon_small(v: f64, sn: f64, cn: f64, dn: f64, m: f64, mc: f64) -> f64 {
 /// ```
 /// which avoids R_D at cn(a)², dn(a)² (these underflow when m₁ < 1e-300
 /// and a → K) and works when rounding leaves a a hair above K (s < 0).
-fn epsilon_half_period(a: f64, k: f64, e_complete: f64, m: f64, mc: f64) -> f64 {
+fn epsilon_half_period(a: f64, k: f64, k_tail: f64, e_complete: f64, m: f64, mc: f64) -> f64 {
     if a <= 0.5 * k {
-        let (sn, cn, dn) = sncndn_small(a, m, mc);
+        let (sn, cn, dn) = sncndn_quarter(a, m, mc);
         epsilon_small(a, sn, cn, dn, m, mc)
     } else {
-        let s = k - a;
+        let s = (k - a) + k_tail;
         let v = s.abs();
-        let (sn, cn, dn) = sncndn_small(v, m, mc);
+        let (sn, cn, dn) = sncndn_quarter(v, m, mc);
         let es = epsilon_small(v, sn, cn, dn, m, mc);
         (e_complete - es.copysign(s)) + m * sn.copysign(s) * cd_small(sn, dn, mc)
     }
@@ -90,9 +90,11 @@ pub fn jacobi_epsilon(u: f64, modulus: Modulus) -> f64 {
     if mc == 0.0 {
         return u.tanh();
     }
-    let Reduced { j, r, k, .. } = reduce_2k(u, modulus);
+    let Reduced {
+        j, r, k, k_tail, ..
+    } = reduce_2k(u, modulus);
     let e_complete = ellip_e(modulus);
-    let e = epsilon_half_period(r.abs(), k, e_complete, m, mc).copysign(r);
+    let e = epsilon_half_period(r.abs(), k, k_tail, e_complete, m, mc).copysign(r);
     if j == 0.0 {
         e
     } else {
@@ -134,9 +136,9 @@ pub fn jacobi_zeta(u: f64, modulus: Modulus) -> f64 {
     if mc == 0.0 {
         return u.tanh();
     }
-    let Reduced { r, k, .. } = reduce_2k(u, modulus);
+    let Reduced { r, k, k_tail, .. } = reduce_2k(u, modulus);
     let a = r.abs();
     let e_complete = ellip_e(modulus);
-    let e = epsilon_half_period(a, k, e_complete, m, mc);
+    let e = epsilon_half_period(a, k, k_tail, e_complete, m, mc);
     (e - a * (e_complete / k)).copysign(r)
 }

@@ -5,6 +5,7 @@ use core::fmt;
 use super::Modulus;
 use super::complete::ellip_k_dd;
 use super::incomplete::{PI_HI, PI_LO, round_ties_even};
+use super::landen::{LANDEN_MC, LANDEN_MIN_V, LandenChain, hyperbolic_reach, sncndn_hyperbolic};
 
 /// The Jacobi elliptic functions at one point, with the amplitude.
 ///
@@ -91,8 +92,10 @@ pub(crate) struct Reduced {
     pub odd: bool,
     /// The remainder r.
     pub r: f64,
-    /// K itself.
+    /// K itself, rounded.
     pub k: f64,
+    /// K − `k` (from K in double-double), so that K − a is formed to ~1e-32.
+    pub k_tail: f64,
 }
 
 /// Whether the integer-valued double j is odd (doubles of magnitude ≥ 2⁵³
@@ -104,6 +107,7 @@ fn is_odd(j: f64) -> bool {
 pub(crate) fn reduce_2k(u: f64, modulus: Modulus) -> Reduced {
     let (k_hi, k_lo) = ellip_k_dd(modulus);
     let k = k_hi + k_lo;
+    let k_tail = (k_hi - k) + k_lo;
     let mut j = round_ties_even(u / (2.0 * k));
     if j == 0.0 {
         return Reduced {
@@ -111,6 +115,7 @@ pub(crate) fn reduce_2k(u: f64, modulus: Modulus) -> Reduced {
             odd: false,
             r: u,
             k,
+            k_tail,
         };
     }
     let two_k = 2.0 * k_hi;
@@ -127,6 +132,7 @@ pub(crate) fn reduce_2k(u: f64, modulus: Modulus) -> Reduced {
             odd: is_odd(j),
             r,
             k,
+            k_tail,
         };
     }
     // |u| ≥ 2²⁶·2K: u/2K itself is rounded, so the first remainder can
@@ -147,7 +153,13 @@ pub(crate) fn reduce_2k(u: f64, modulus: Modulus) -> Reduced {
     if r.abs() > k {
         r = 0.0;
     }
-    Reduced { j, odd, r, k }
+    Reduced {
+        j,
+        odd,
+        r,
+        k,
+        k_tail,
+    }
 }
 
 /// Below this |u| the Maclaurin series (to u¹¹ for sn, u¹⁰ for cn, dn) is
@@ -256,14 +268,7 @@ const HYPERBOLIC_MC: f64 = 1.0 / (1u64 << 30) as f64;
 /// before, which the condition number (~v) absorbs only from a large start.
 /// For m₁ < 2⁻⁶⁰, v₀ ≥ 12.5 > K/2 and no doubling happens.
 fn sncndn_near_one(v: f64, mc: f64) -> (f64, f64, f64) {
-    // v₀ from the binary exponent e of m₁ (m₁ < 2^(e+1)), which keeps
-    // m₁ e^{2v₀} ≤ 2⁻²⁴ without a logarithm; subnormal m₁ take the log.
-    let e = ((mc.to_bits() >> 52) & 0x7ff) as i32 - 1023;
-    let v0 = if e > -1023 {
-        0.5 * core::f64::consts::LN_2 * f64::from(-25 - e)
-    } else {
-        0.5 * ((1.0 / (1u64 << 24) as f64) / mc).ln()
-    };
+    let v0 = hyperbolic_reach(mc);
     let mut n = 0;
     let mut x = v;
     while x > v0 {
@@ -281,43 +286,36 @@ fn sncndn_near_one(v: f64, mc: f64) -> (f64, f64, f64) {
     (sn, cn, dn)
 }
 
-/// (sn, cn, dn) for m₁ e^{2v} ≤ 2⁻²⁴ (DLMF 22.10.4–6):
-///
-/// ```text
-/// sn = tanh v + ¼ m₁ (sinh v cosh v − v) sech² v
-/// cn = sech v − ¼ m₁ (sinh v cosh v − v) tanh v sech v
-/// dn = sech v + ¼ m₁ (sinh v cosh v + v) tanh v sech v
-/// ```
-fn sncndn_hyperbolic(v: f64, mc: f64) -> (f64, f64, f64) {
-    // One expm1 and one exp instead of tanh, cosh and sinh:
-    // t = e^{−2v} − 1, tanh v = −t/(2 + t), sech v = 2e^{−v}/(1 + e^{−2v}),
-    // sinh v cosh v = −t (2 + t)/(4 e^{−2v}); no cancellation for any v ≥ 0.
-    let t = (-2.0 * v).exp_m1();
-    let ex = (-v).exp();
-    let e2 = ex * ex;
-    let th = -t / (2.0 + t);
-    let sech = 2.0 * ex / (1.0 + e2);
-    let sc = -t * (2.0 + t) / (4.0 * e2);
-    let q = 0.25 * mc;
-    let sn = th + q * (sc - v) * (sech * sech);
-    let cn = sech - q * (sc - v) * th * sech;
-    let dn = sech + q * (sc + v) * th * sech;
-    (sn, cn, dn)
+/// (sn, cn, dn) for 0 ≤ v ≤ K/2 (v may be a hair below 0 after
+/// rounding). For m₁ ≤ 0.1 and v ≥ 1 the ascending Landen transformation
+/// carries v to a modulus so close to 1 that the expansion about m = 1 is
+/// exact to rounding ([`LandenChain`]): no doubling, whose rounding errors
+/// (~1.5 ulp per step, each doubled by the steps after it) reached 8 ulp
+/// in cn and dn near m₁ ~ 1e-8 and v ~ K/2. Elsewhere the Maclaurin series
+/// and doubling ([`sncndn_small`]) take at most five steps.
+#[inline]
+pub(crate) fn sncndn_quarter(v: f64, m: f64, mc: f64) -> (f64, f64, f64) {
+    if v >= LANDEN_MIN_V && mc <= LANDEN_MC {
+        LandenChain::new(m, mc, v).eval(v)
+    } else {
+        sncndn_small(v, m, mc)
+    }
 }
 
 /// (sn, cn, dn) for 0 ≤ a ≤ K (a reduced argument), folding a > K/2 with
 /// the quarter-period shift (DLMF 22.4.3): with s = K − a,
 /// sn a = cd s = √(1 − m₁ sd² s), cn a = k′ sd s, dn a = k′ nd s.
-pub(crate) fn sncndn_half_period(a: f64, k: f64, m: f64, mc: f64) -> (f64, f64, f64) {
+/// K = `k` + `k_tail` (double-double), so s carries no rounding of K.
+pub(crate) fn sncndn_half_period(a: f64, k: f64, k_tail: f64, m: f64, mc: f64) -> (f64, f64, f64) {
     if a > 0.5 * k {
-        let (s, _, d) = sncndn_small(k - a, m, mc);
+        let (s, _, d) = sncndn_quarter((k - a) + k_tail, m, mc);
         // sn a = cd s = √(1 − m₁ sd² s): the ratio cn/dn of two values
         // near √k′ would carry both their errors, while m₁ sd² ≤ ½ here.
         let kp = mc.sqrt();
         let sd = s / d;
         ((1.0 - mc * sd * sd).sqrt(), kp * sd, kp / d)
     } else {
-        sncndn_small(a, m, mc)
+        sncndn_quarter(a, m, mc)
     }
 }
 
@@ -387,8 +385,14 @@ pub fn jacobi(u: f64, modulus: Modulus) -> Jacobi {
             am: u.sinh().atan(),
         };
     }
-    let Reduced { j, odd, r, k } = reduce_2k(u, modulus);
-    let (sn, cn, dn) = sncndn_half_period(r.abs(), k, m, mc);
+    let Reduced {
+        j,
+        odd,
+        r,
+        k,
+        k_tail,
+    } = reduce_2k(u, modulus);
+    let (sn, cn, dn) = sncndn_half_period(r.abs(), k, k_tail, m, mc);
     let am_r = sn.atan2(cn).copysign(r);
     let sn = sn.copysign(r);
     let (sn, cn) = if odd { (-sn, -cn) } else { (sn, cn) };

@@ -125,6 +125,7 @@ mod complete;
 mod epsilon;
 mod incomplete;
 mod jacobi;
+mod landen;
 mod modulus;
 mod poly;
 
