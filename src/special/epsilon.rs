@@ -2,7 +2,7 @@
 
 use super::Modulus;
 use super::carlson::rd;
-use super::complete::ellip_e;
+use super::complete::{ellip_e, ellip_e_dd, two_prod};
 use super::jacobi::{Reduced, reduce_2k, sncndn_quarter};
 
 /// cd = cn/dn on [0, K/2] as √(1 − m₁ sd²) (m₁ sd² ≤ ½ there): the quotient
@@ -93,12 +93,20 @@ pub fn jacobi_epsilon(u: f64, modulus: Modulus) -> f64 {
     let Reduced {
         j, r, k, k_tail, ..
     } = reduce_2k(u, modulus);
-    let e_complete = ellip_e(modulus);
+    let (e_hi, e_lo) = ellip_e_dd(modulus);
+    let e_complete = e_hi + e_lo;
     let e = epsilon_half_period(r.abs(), k, k_tail, e_complete, m, mc).copysign(r);
     if j == 0.0 {
         e
-    } else {
+    } else if j.abs() > 4_503_599_627_370_496.0 {
+        // Beyond 2⁵² periods u carries no fraction of a period; Dekker's
+        // split would overflow near f64::MAX.
         2.0 * j * e_complete + e
+    } else {
+        // 2jE exactly as p + pe + 2j E_lo: where ε(u) ≈ E (u ≈ 2K − r,
+        // m → 1) the rounding of 2jE alone would be a whole ulp of ε.
+        let (p, pe) = two_prod(2.0 * j, e_hi);
+        p + (pe + 2.0 * j * e_lo + e)
     }
 }
 
