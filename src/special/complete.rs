@@ -38,14 +38,15 @@ pub(crate) fn two_prod(a: f64, b: f64) -> (f64, f64) {
     (p, ((ah * bh - p) + ah * bl + al * bh) + al * bl)
 }
 
-/// ln 2 with its 32 low bits zero (fdlibm's `ln2_hi`), so that e·LN2_HI is
+/// ln 2 to 32 significant bits (fdlibm's `ln2_hi`), so that e·LN2_HI is
 /// exact for |e| < 2²¹, and the rest.
-const LN2_HI: f64 = 6.931_471_803_691_238_2e-1;
-const LN2_LO: f64 = 1.908_214_929_270_587_7e-10;
+const LN2_HI: f64 = f64::from_bits(0x3fe6_2e42_fee0_0000);
+const LN2_LO: f64 = f64::from_bits(0x3dea_39ef_3579_3c76);
 
 /// L = −ln m₁ as a double-double for 0 < m₁ ≤ 0.05: m₁ = f·2^e with
-/// f ∈ [√½, √2), L = −e ln 2 − ln f, where e ln 2 is exact and ln f (|ln f|
-/// ≤ 0.35) carries libm's half ulp of a number much smaller than L ≥ 3.
+/// f ∈ [1, 2), L = −e ln 2 − ln f, where e ln 2 is exact and ln f ≤ 0.7
+/// carries libm's half ulp of a number much smaller than L ≥ 3 (≤ 0.12 ulp
+/// of L).
 #[inline(always)]
 pub(crate) fn neg_ln_dd(mc: f64) -> (f64, f64) {
     // Subnormals: scale by 2⁵⁴ first.
@@ -55,13 +56,8 @@ pub(crate) fn neg_ln_dd(mc: f64) -> (f64, f64) {
         (mc, 0)
     };
     let bits = x.to_bits();
-    let mut e = ((bits >> 52) & 0x7ff) as i32 - 1023;
-    let mut f = f64::from_bits((bits & 0x000f_ffff_ffff_ffff) | 0x3ff0_0000_0000_0000);
-    if f > core::f64::consts::SQRT_2 {
-        f *= 0.5;
-        e += 1;
-    }
-    let e = f64::from(e + e0);
+    let e = f64::from(((bits >> 52) & 0x7ff) as i32 - 1023 + e0);
+    let f = f64::from_bits((bits & 0x000f_ffff_ffff_ffff) | 0x3ff0_0000_0000_0000);
     let a = -e * LN2_HI;
     let b = -(e * LN2_LO + f.ln());
     let hi = a + b;

@@ -119,14 +119,18 @@
 //!   conditional duplication*, Numer. Math. 123 (2013) 585–605.
 
 mod carlson;
+#[rustfmt::skip]
 mod carlson_series;
+#[rustfmt::skip]
 mod coeffs;
 mod complete;
+mod duplication;
 mod epsilon;
 mod incomplete;
 mod jacobi;
 mod landen;
 mod modulus;
+mod period;
 mod poly;
 
 pub use complete::{ellip_e, ellip_k};
