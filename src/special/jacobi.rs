@@ -15,7 +15,7 @@ use super::period::{Period, Reduced};
 /// ```
 /// The nine other Glaisher functions are the quotients returned by the
 /// helpers (`nd = 1/dn`, `cd = cn/dn`, `sd = sn/dn`, …; DLMF 22.2.10).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Jacobi {
     /// sn(u, k).
     pub sn: f64,

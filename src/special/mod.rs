@@ -126,6 +126,7 @@ mod coeffs;
 mod complete;
 mod duplication;
 mod epsilon;
+mod fixed;
 mod incomplete;
 mod jacobi;
 mod landen;
@@ -135,6 +136,7 @@ mod poly;
 
 pub use complete::{ellip_e, ellip_k};
 pub use epsilon::{jacobi_epsilon, jacobi_zeta};
+pub use fixed::FixedModulus;
 pub use incomplete::{ellip_e_inc, ellip_f};
 pub use jacobi::{Jacobi, jacobi};
 pub use modulus::Modulus;
