@@ -7,6 +7,10 @@
 //! timings include building the `Modulus` from m (validation and √m) at
 //! every call, as `ellip` validates m at every call.
 //!
+//! "jacobi@8 m" times 8 moduli (the set's first 8 m) × 128 u each: single
+//! calls against one `FixedModulus` per modulus, built inside the timed
+//! pass.
+//!
 //! Before criterion runs, the same batches are timed interleaved (hockle,
 //! then ellip, then the next function, 300 rounds) and the minimum per
 //! batch is printed: on a shared machine the minimum of interleaved rounds
@@ -16,7 +20,9 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use criterion::{Criterion, Throughput, criterion_group};
-use hockle::special::{Modulus, ellip_e, ellip_e_inc, ellip_f, ellip_k, jacobi};
+use hockle::special::{
+    FixedModulus, Modulus, ellip_e, ellip_e_inc, ellip_f, ellip_k, jacobi, jacobi_epsilon,
+};
 
 const N: usize = 1024;
 
@@ -128,9 +134,45 @@ fn bench(c: &mut Criterion) {
                     .sum::<f64>()
             })
         });
+        // Many u at one modulus: 8 moduli (the set's first 8 m) × 128 u each,
+        // single calls against one FixedModulus per modulus (built inside the
+        // timed loop, so its construction is paid once per 128 calls).
+        g.bench_function("jacobi@fixed m/single", |b| {
+            b.iter(|| {
+                xs.chunks(N / GROUPS)
+                    .map(|c| {
+                        let md = Modulus::from_m(black_box(c[0].0)).unwrap();
+                        c.iter()
+                            .map(|&(_, _, u)| {
+                                let j = jacobi(black_box(u), md);
+                                j.sn + j.cn + j.dn
+                            })
+                            .sum::<f64>()
+                    })
+                    .sum::<f64>()
+            })
+        });
+        g.bench_function("jacobi@fixed m/FixedModulus", |b| {
+            b.iter(|| {
+                xs.chunks(N / GROUPS)
+                    .map(|c| {
+                        let f = FixedModulus::new(Modulus::from_m(black_box(c[0].0)).unwrap());
+                        c.iter()
+                            .map(|&(_, _, u)| {
+                                let j = f.jacobi(black_box(u));
+                                j.sn + j.cn + j.dn
+                            })
+                            .sum::<f64>()
+                    })
+                    .sum::<f64>()
+            })
+        });
         g.finish();
     }
 }
+
+/// Moduli per batch in the fixed-modulus comparison.
+const GROUPS: usize = 8;
 
 /// One named pass over a batch, returning a checksum.
 type Pass<'a> = Box<dyn FnMut() -> f64 + 'a>;
@@ -212,6 +254,59 @@ fn interleaved() {
                         .map(|&(m, _, u)| {
                             let j = jacobi(black_box(u), md(m));
                             j.sn + j.cn + j.dn
+                        })
+                        .sum()
+                }),
+            ),
+            (
+                "epsilon",
+                Box::new(|| {
+                    xs.iter()
+                        .map(|&(m, _, u)| jacobi_epsilon(black_box(u), md(m)))
+                        .sum()
+                }),
+            ),
+            (
+                "jacobi@8 m single",
+                Box::new(|| {
+                    xs.chunks(N / GROUPS)
+                        .map(|c| {
+                            let mdl = md(c[0].0);
+                            c.iter()
+                                .map(|&(_, _, u)| {
+                                    let j = jacobi(black_box(u), mdl);
+                                    j.sn + j.cn + j.dn
+                                })
+                                .sum::<f64>()
+                        })
+                        .sum()
+                }),
+            ),
+            (
+                "jacobi@8 m FixedModulus",
+                Box::new(|| {
+                    xs.chunks(N / GROUPS)
+                        .map(|c| {
+                            let f = FixedModulus::new(md(c[0].0));
+                            c.iter()
+                                .map(|&(_, _, u)| {
+                                    let j = f.jacobi(black_box(u));
+                                    j.sn + j.cn + j.dn
+                                })
+                                .sum::<f64>()
+                        })
+                        .sum()
+                }),
+            ),
+            (
+                "epsilon@8 m FixedModulus",
+                Box::new(|| {
+                    xs.chunks(N / GROUPS)
+                        .map(|c| {
+                            let f = FixedModulus::new(md(c[0].0));
+                            c.iter()
+                                .map(|&(_, _, u)| f.epsilon(black_box(u)))
+                                .sum::<f64>()
                         })
                         .sum()
                 }),

@@ -2,8 +2,9 @@
 
 use super::Modulus;
 use super::carlson::rd;
-use super::complete::ellip_e;
-use super::jacobi::{Reduced, reduce_2k, sncndn_small};
+use super::complete::{ellip_e, ellip_e_dd, two_prod};
+use super::jacobi::sncndn_quarter;
+use super::period::Period;
 
 /// cd = cn/dn on [0, K/2] as √(1 − m₁ sd²) (m₁ sd² ≤ ½ there): the quotient
 /// of two values computed apart would carry both their errors when m → 1.
@@ -35,16 +36,41 @@ fn epsilon_small(v: f64, sn: f64, cn: f64, dn: f64, m: f64, mc: f64) -> f64 {
 /// ```
 /// which avoids R_D at cn(a)², dn(a)² (these underflow when m₁ < 1e-300
 /// and a → K) and works when rounding leaves a a hair above K (s < 0).
-fn epsilon_half_period(a: f64, k: f64, e_complete: f64, m: f64, mc: f64) -> f64 {
-    if a <= 0.5 * k {
-        let (sn, cn, dn) = sncndn_small(a, m, mc);
+pub(crate) fn epsilon_half_period(
+    a: f64,
+    period: &Period,
+    e_complete: f64,
+    m: f64,
+    mc: f64,
+    quarter: impl Fn(f64) -> (f64, f64, f64),
+) -> f64 {
+    if a <= 0.5 * period.k {
+        let (sn, cn, dn) = quarter(a);
         epsilon_small(a, sn, cn, dn, m, mc)
     } else {
-        let s = k - a;
+        let s = (period.k - a) + period.k_tail;
         let v = s.abs();
-        let (sn, cn, dn) = sncndn_small(v, m, mc);
+        let (sn, cn, dn) = quarter(v);
         let es = epsilon_small(v, sn, cn, dn, m, mc);
         (e_complete - es.copysign(s)) + m * sn.copysign(s) * cd_small(sn, dn, mc)
+    }
+}
+
+/// ε(u) = 2jE + sgn(r) ε(|r|) from ε(|r|) and E = e_hi + e_lo.
+#[inline(always)]
+pub(crate) fn epsilon_assemble(j: f64, r: f64, e_r: f64, (e_hi, e_lo): (f64, f64)) -> f64 {
+    let e = e_r.copysign(r);
+    if j == 0.0 {
+        e
+    } else if j.abs() > 4_503_599_627_370_496.0 {
+        // Beyond 2⁵² periods u carries no fraction of a period; Dekker's
+        // split would overflow near f64::MAX.
+        2.0 * j * (e_hi + e_lo) + e
+    } else {
+        // 2jE exactly as p + pe + 2j E_lo: where ε(u) ≈ E (u ≈ 2K − r,
+        // m → 1) the rounding of 2jE alone would be a whole ulp of ε.
+        let (p, pe) = two_prod(2.0 * j, e_hi);
+        p + (pe + 2.0 * j * e_lo + e)
     }
 }
 
@@ -90,14 +116,13 @@ pub fn jacobi_epsilon(u: f64, modulus: Modulus) -> f64 {
     if mc == 0.0 {
         return u.tanh();
     }
-    let Reduced { j, r, k, .. } = reduce_2k(u, modulus);
-    let e_complete = ellip_e(modulus);
-    let e = epsilon_half_period(r.abs(), k, e_complete, m, mc).copysign(r);
-    if j == 0.0 {
-        e
-    } else {
-        2.0 * j * e_complete + e
-    }
+    let period = Period::new(modulus);
+    let red = period.reduce(u);
+    let e_dd = ellip_e_dd(modulus);
+    let e_r = epsilon_half_period(red.r.abs(), &period, e_dd.0 + e_dd.1, m, mc, |v| {
+        sncndn_quarter(v, m, mc)
+    });
+    epsilon_assemble(red.j, red.r, e_r, e_dd)
 }
 
 /// Jacobi's zeta function Z(u, k) = ε(u, k) − u E/K.
@@ -134,9 +159,10 @@ pub fn jacobi_zeta(u: f64, modulus: Modulus) -> f64 {
     if mc == 0.0 {
         return u.tanh();
     }
-    let Reduced { r, k, .. } = reduce_2k(u, modulus);
+    let period = Period::new(modulus);
+    let r = period.reduce(u).r;
     let a = r.abs();
     let e_complete = ellip_e(modulus);
-    let e = epsilon_half_period(a, k, e_complete, m, mc);
-    (e - a * (e_complete / k)).copysign(r)
+    let e = epsilon_half_period(a, &period, e_complete, m, mc, |v| sncndn_quarter(v, m, mc));
+    (e - a * (e_complete / period.k)).copysign(r)
 }

@@ -119,17 +119,24 @@
 //!   conditional duplication*, Numer. Math. 123 (2013) 585–605.
 
 mod carlson;
+#[rustfmt::skip]
 mod carlson_series;
+#[rustfmt::skip]
 mod coeffs;
 mod complete;
+mod duplication;
 mod epsilon;
+mod fixed;
 mod incomplete;
 mod jacobi;
+mod landen;
 mod modulus;
+mod period;
 mod poly;
 
 pub use complete::{ellip_e, ellip_k};
 pub use epsilon::{jacobi_epsilon, jacobi_zeta};
+pub use fixed::FixedModulus;
 pub use incomplete::{ellip_e_inc, ellip_f};
 pub use jacobi::{Jacobi, jacobi};
 pub use modulus::Modulus;

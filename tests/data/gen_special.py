@@ -12,6 +12,13 @@ that m = 1 - m1 is exact (m1 down to 1e-300 needs ~340 digits).  Each
 reference value v is stored as two doubles hi = fl(v), lo = fl(v - hi), so
 that the test measures errors well below one ulp.
 
+Besides the broad sets (2000 random moduli, |phi| <= 100, |u| <= 1e4), three
+dense sets cover the corner near m = 1 (issue 9), appended to the same files
+with their own seeds: m1 log-uniform in [1e-14, 1e-2] for K and E; m1 in
+[1e-12, 1e-3] with phi up to 40 and any modulus with 10 pi <= |phi| <= 1e4
+for F and E(phi); m1 in [1e-12, 1e-3] with u/K uniform in [1/2, 4] (and a
+grid of u/K in steps of 1/8) for the Jacobi functions.
+
 Independent checks run here, not in the code under test: F(am u) = u for
 every Jacobi row (mpmath's ellipf is Carlson-based, its ellipfun is theta
 based), dn^2 + m sn^2 = 1, and E(am u) against 2jE + E(r).
@@ -140,6 +147,63 @@ def jacobi(rng):
     return rows
 
 
+DENSE_C = (1e-12, 1e-3)
+
+
+def complete_dense(rng):
+    """m1 log-uniform in [1e-14, 1e-2]: the log-term region of K and E."""
+    rows = []
+    for _ in range(1500):
+        x = loguniform(rng, 1e-14, 1e-2)
+        setprec("c", x)
+        m, _ = mod("c", x)
+        rows.append(f"c\t{x!r}\t{hl(ellipk(m))}\t{hl(ellipe(m))}")
+    return rows
+
+
+def incomplete_dense(rng):
+    """m1 in [1e-12, 1e-3] with phi in (0, 40], and phi beyond 10 pi
+    (10 pi <= |phi| <= 1e4, log-uniform) for moduli as in `moduli`."""
+    pts = []
+    for _ in range(1500):
+        x = loguniform(rng, *DENSE_C)
+        pts.append(("c", x, rng.uniform(0.0, 40.0) * rng.choice([-1.0, 1.0])))
+    for i in range(1000):
+        if i % 2 == 0:
+            kind, x = "m", rng.uniform(0.0, 1.0)
+        else:
+            kind, x = "c", loguniform(rng, 1e-300, 1.0)
+        p = loguniform(rng, 10 * math.pi, 1e4) * rng.choice([-1.0, 1.0])
+        pts.append((kind, x, p))
+    rows = []
+    for kind, x, p in pts:
+        setprec(kind, x)
+        m, _ = mod(kind, x)
+        phi = mpf(p)
+        rows.append(f"{kind}\t{x!r}\t{p!r}\t{hl(ellipf(phi, m))}\t{hl(ellipe(phi, m))}")
+    return rows
+
+
+def jacobi_dense(rng):
+    """m1 in [1e-12, 1e-3] (log-uniform) x u/K in [1/2, 4]: 2500 random
+    points, then 19 moduli (every half decade) x u/K = 1/2, 5/8, ..., 4."""
+    pts = []
+    for _ in range(2500):
+        x = loguniform(rng, *DENSE_C)
+        pts.append((x, rng.uniform(0.5, 4.0) * rng.choice([-1.0, 1.0])))
+    for i in range(19):
+        x = 10.0 ** (-3.0 - 0.5 * i)
+        for j in range(4, 33):
+            pts.append((x, j / 8.0))
+    rows = []
+    for x, t in pts:
+        setprec("c", x)
+        m, _ = mod("c", x)
+        u = float(t * ellipk(m))
+        rows.append(jacobi_row("c", x, u))
+    return rows
+
+
 def write(name, header, rows):
     with open(OUT + name, "w") as f:
         f.write(header + "\n")
@@ -148,16 +212,20 @@ def write(name, header, rows):
 
 
 def main():
-    write("special_complete.tsv", "kind\tx\tK_hi\tK_lo\tE_hi\tE_lo", complete(random.Random(SEED)))
+    write(
+        "special_complete.tsv",
+        "kind\tx\tK_hi\tK_lo\tE_hi\tE_lo",
+        complete(random.Random(SEED)) + complete_dense(random.Random(SEED + 3)),
+    )
     write(
         "special_incomplete.tsv",
         "kind\tx\tphi\tF_hi\tF_lo\tE_hi\tE_lo",
-        incomplete(random.Random(SEED + 1)),
+        incomplete(random.Random(SEED + 1)) + incomplete_dense(random.Random(SEED + 4)),
     )
     write(
         "special_jacobi.tsv",
         "kind\tx\tu\tsn_hi\tsn_lo\tcn_hi\tcn_lo\tdn_hi\tdn_lo\tam_hi\tam_lo\teps_hi\teps_lo",
-        jacobi(random.Random(SEED + 2)),
+        jacobi(random.Random(SEED + 2)) + jacobi_dense(random.Random(SEED + 5)),
     )
 
 

@@ -213,3 +213,46 @@ fn huge_arguments_and_extreme_moduli_stay_finite() {
         }
     }
 }
+
+/// The slice API refuses an output of the wrong length (and writes nothing).
+#[test]
+fn fixed_modulus_slices_check_lengths() {
+    use hockle::special::{FixedModulus, Jacobi};
+    let fixed = FixedModulus::new(Modulus::from_m(0.5).unwrap());
+    let mut out = [Jacobi::default(); 2];
+    let err = fixed.jacobi_slice(&[0.1, 0.2, 0.3], &mut out).unwrap_err();
+    assert!(matches!(
+        err,
+        hockle::Error::LengthMismatch {
+            found: 2,
+            expected: 3,
+            ..
+        }
+    ));
+    assert_eq!(out, [Jacobi::default(); 2]);
+    let mut eps = [0.0; 4];
+    assert!(fixed.epsilon_slice(&[0.1], &mut eps).is_err());
+    assert!(fixed.jacobi_slice(&[], &mut []).is_ok());
+}
+
+/// FixedModulus takes the same special cases as the single-call functions.
+#[test]
+fn fixed_modulus_special_cases() {
+    use hockle::special::{FixedModulus, jacobi, jacobi_epsilon};
+    for mc in [0.0, 1.0, 1e-300, 5e-324] {
+        let md = Modulus::from_complement(mc).unwrap();
+        let fixed = FixedModulus::new(md);
+        for u in [0.0, 0.7, -3.0, 1e300, f64::NAN, f64::INFINITY] {
+            let (a, b) = (fixed.jacobi(u), jacobi(u, md));
+            let same = |x: f64, y: f64| x == y || (x.is_nan() && y.is_nan());
+            assert!(
+                same(a.sn, b.sn) && same(a.cn, b.cn) && same(a.dn, b.dn),
+                "{md} u = {u}"
+            );
+            assert!(
+                same(fixed.epsilon(u), jacobi_epsilon(u, md)),
+                "{md} u = {u}"
+            );
+        }
+    }
+}

@@ -1,0 +1,160 @@
+//! sn, cn, dn on [0, K/2] by the Maclaurin series and conditional
+//! duplication (crate-private).
+
+use super::landen::{hyperbolic_reach, sncndn_hyperbolic};
+
+/// Below this |u| the Maclaurin series (to u¹¹ for sn, u¹⁰ for cn, dn) is
+/// exact to rounding: the first neglected coefficient is ≤ 0.0057 for every
+/// m ∈ [0, 1] (m = 1, sech), and 0.0057 · (1/16)¹² ≈ 2e-17.
+const SERIES_MAX: f64 = 1.0 / 16.0;
+
+/// (sn, cn, dn) for 0 ≤ v ≤ K/2: halve to |v| ≤ 1/16, Maclaurin series,
+/// then double back (conditional duplication, after Fukushima 2013).
+///
+/// While cn and dn are near 1 the doubling carries their complements
+/// y = 1 − cn, z = 1 − dn (carrying cn itself would double its relative
+/// error at every step); once y (or z) exceeds ½ it switches to cn (or dn)
+/// itself. With D = cn² + sn² dn² (= 1 − m sn⁴, a sum of positives):
+///
+/// ```text
+/// sn(2v)     = 2 sn cn dn / D                 DLMF 22.8.20
+/// 1 − cn(2v) = 2 sn² dn² / D                  (positive terms)
+/// 1 − dn(2v) = 2 m sn² cn² / D                (positive terms)
+/// cn(2v)     = (cn⁴ − m₁ sn⁴) / D             (= cn² − sn² dn²; benign for 2v ≤ K/2)
+/// dn(2v)     = √(cn²(2v) + m₁ sn²(2v))       (once dn < ½, which needs cn < ½)
+/// ```
+pub(crate) fn sncndn_small(v: f64, m: f64, mc: f64) -> (f64, f64, f64) {
+    Maclaurin::new(m, mc).eval(v)
+}
+
+/// The Maclaurin coefficients of sn, 1 − cn and 1 − dn at one modulus
+/// (DLMF 22.10.1–3), in x² after the leading term, signs included.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Maclaurin {
+    s: [f64; 5],
+    y: [f64; 5],
+    z: [f64; 5],
+    m: f64,
+    mc: f64,
+}
+
+impl Maclaurin {
+    #[inline(always)]
+    pub(crate) fn new(m: f64, mc: f64) -> Self {
+        let m2 = m * m;
+        let m3 = m2 * m;
+        let m4 = m2 * m2;
+        let s5 = (1.0 + 14.0 * m + m2) / 120.0;
+        let s7 = (1.0 + 135.0 * m + 135.0 * m2 + m3) / 5040.0;
+        let s9 = (1.0 + 1228.0 * m + 5478.0 * m2 + 1228.0 * m3 + m4) / 362_880.0;
+        let s11 =
+            (1.0 + 11069.0 * m + 165_826.0 * (m2 + m3) + 11069.0 * m4 + m4 * m) / 39_916_800.0;
+        let c4 = (1.0 + 4.0 * m) / 24.0;
+        let c6 = (1.0 + 44.0 * m + 16.0 * m2) / 720.0;
+        let c8 = (1.0 + 408.0 * m + 912.0 * m2 + 64.0 * m3) / 40320.0;
+        let c10 = (1.0 + 3688.0 * m + 30768.0 * m2 + 15808.0 * m3 + 256.0 * m4) / 3_628_800.0;
+        let d4 = m * (4.0 + m) / 24.0;
+        let d6 = m * (16.0 + 44.0 * m + m2) / 720.0;
+        let d8 = m * (64.0 + 912.0 * m + 408.0 * m2 + m3) / 40320.0;
+        let d10 = m * (256.0 + 15808.0 * m + 30768.0 * m2 + 3688.0 * m3 + m4) / 3_628_800.0;
+        Self {
+            s: [-(1.0 + m) / 6.0, s5, -s7, s9, -s11],
+            y: [0.5, -c4, c6, -c8, c10],
+            z: [0.5 * m, -d4, d6, -d8, d10],
+            m,
+            mc,
+        }
+    }
+
+    /// (sn, cn, dn) at 0 ≤ v ≤ K/2, as described at [`sncndn_small`].
+    #[inline(always)]
+    pub(crate) fn eval(&self, v: f64) -> (f64, f64, f64) {
+        let (m, mc) = (self.m, self.mc);
+        if mc < HYPERBOLIC_MC {
+            return sncndn_near_one(v, mc);
+        }
+        let mut n = 0;
+        let mut x = v;
+        while x > SERIES_MAX {
+            x *= 0.5;
+            n += 1;
+        }
+        let x2 = x * x;
+        let horner = |a: &[f64; 5]| a[0] + x2 * (a[1] + x2 * (a[2] + x2 * (a[3] + x2 * a[4])));
+        let mut sn = x * (1.0 + x2 * horner(&self.s));
+        // y = 1 − cn, z = 1 − dn.
+        let mut y = x2 * horner(&self.y);
+        let mut z = x2 * horner(&self.z);
+        // cn, dn carried directly once their complements pass ½ (NaN until then).
+        let mut cn = f64::NAN;
+        let mut dn = f64::NAN;
+        let mut cn_direct = false;
+        let mut dn_direct = false;
+        for _ in 0..n {
+            let c = if cn_direct { cn } else { 1.0 - y };
+            let d = if dn_direct { dn } else { 1.0 - z };
+            let s2 = sn * sn;
+            let c2 = c * c;
+            let d2 = d * d;
+            let den = c2 + s2 * d2;
+            sn = 2.0 * sn * c * d / den;
+            if cn_direct {
+                cn = (c2 * c2 - mc * (s2 * s2)) / den;
+            } else {
+                y = 2.0 * s2 * d2 / den;
+                if y > 0.5 {
+                    cn_direct = true;
+                    cn = 1.0 - y;
+                }
+            }
+            if dn_direct {
+                // dn² = cn² + m₁ sn² (positive terms). Doubling cn and dn
+                // separately would let the error in this identity grow 4× per
+                // step (only the part consistent with a shift of v grows 2×).
+                let c = if cn_direct { cn } else { 1.0 - y };
+                dn = (c * c + mc * (sn * sn)).sqrt();
+            } else {
+                z = 2.0 * m * s2 * c2 / den;
+                if z > 0.5 {
+                    dn_direct = true;
+                    dn = 1.0 - z;
+                }
+            }
+        }
+        let c = if cn_direct { cn } else { 1.0 - y };
+        let d = if dn_direct { dn } else { 1.0 - z };
+        (sn, c, d)
+    }
+}
+
+/// Below this m₁ (≈ 9.3e-10) sn, cn, dn start from the expansion about
+/// m = 1 instead of the Maclaurin series.
+const HYPERBOLIC_MC: f64 = 1.0 / (1u64 << 30) as f64;
+
+/// (sn, cn, dn) for 0 ≤ v ≤ K/2 and m₁ < 2⁻³⁰. The first-order expansion
+/// about m = 1 (below) has relative corrections ~ m₁ e^{2v}/16 and a
+/// neglected second-order term ~ (m₁ e^{2v}/16)²: exact to rounding while
+/// m₁ e^{2v} ≤ 2⁻²⁴, i.e. v ≤ v₀ = ½ ln(2⁻²⁴/m₁) ≥ 2. Larger v are halved
+/// to ≤ v₀ and doubled back with cn carried directly (cn ≤ sech 2 there)
+/// and dn = √(cn² + m₁ sn²). Starting the doubling at v₀ ≥ 2 rather than
+/// at 1/16 matters: each step adds ~2 ulp to cn and doubles what came
+/// before, which the condition number (~v) absorbs only from a large start.
+/// For m₁ < 2⁻⁶⁰, v₀ ≥ 12.5 > K/2 and no doubling happens.
+fn sncndn_near_one(v: f64, mc: f64) -> (f64, f64, f64) {
+    let v0 = hyperbolic_reach(mc);
+    let mut n = 0;
+    let mut x = v;
+    while x > v0 {
+        x *= 0.5;
+        n += 1;
+    }
+    let (mut sn, mut cn, mut dn) = sncndn_hyperbolic(x, mc);
+    for _ in 0..n {
+        let (s2, c2, d2) = (sn * sn, cn * cn, dn * dn);
+        let den = c2 + s2 * d2;
+        sn = 2.0 * sn * cn * dn / den;
+        cn = (c2 * c2 - mc * (s2 * s2)) / den;
+        dn = (cn * cn + mc * (sn * sn)).sqrt();
+    }
+    (sn, cn, dn)
+}
