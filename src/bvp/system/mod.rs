@@ -210,20 +210,21 @@ fn check_posed(n: usize, nq: usize, nbc: usize, nint: usize, extra: usize) -> Re
     Ok(())
 }
 
-/// The f64 workspace of a system, in bytes (None on overflow).
-fn workspace_bytes(nn: usize, n: usize, m: usize, nq: usize, np: usize, nd: usize) -> Option<u64> {
-    let [nn, n, m, nq, np, nd] = [nn, n, m, nq, np, nd].map(|v| v as u128);
+/// An estimate of the f64 workspace of a system, in bytes (in floating
+/// point, so that no count can overflow it).
+fn workspace_bytes(nn: usize, n: usize, m: usize, nq: usize, np: usize, nd: usize) -> f64 {
+    let [nn, n, m, nq, np, nd] = [nn, n, m, nq, np, nd].map(|v| v as f64);
     let mn = m * n;
     let wcols = mn + n + nq;
-    let nz = 2 * n + nq;
+    let nz = 2.0 * n + nq;
     let floats = nn * mn * wcols // stage blocks
         + nn * (n * n + n * nq) // Γ, Π
-        + nn * mn * (nd + nq + 6) // collocation values, states, residual, D_jk
-        + nn * 2 * n * (2 * n + nz) // elimination panels
+        + nn * mn * (nd + nq + 6.0) // collocation values, states, residual, D_jk
+        + nn * 2.0 * n * (2.0 * n + nz) // elimination panels
         + nn * nd * (mn + n) // dense rows through the elimination
         + nz * nz
-        + np * (n + 2);
-    u64::try_from(floats * 8).ok()
+        + np * (n + 2.0);
+    floats * 8.0
 }
 
 impl<'a, P: Problem + ?Sized> System<'a, P> {
@@ -265,12 +266,13 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
         let m = tab.m;
         let nn = t.len() - 1;
         let nd = nint + extra;
-        let bytes = workspace_bytes(nn, n, m, nq, np, nd).unwrap_or(u64::MAX);
-        if bytes > MAX_WORKSPACE_BYTES {
+        let bytes = workspace_bytes(nn, n, m, nq, np, nd);
+        if bytes > MAX_WORKSPACE_BYTES as f64 {
             return Err(Error::SystemTooLarge {
                 intervals: nn as u64,
                 dim: n as u64,
-                bytes,
+                // Saturating conversion.
+                bytes: bytes as u64,
                 limit: MAX_WORKSPACE_BYTES,
             });
         }
