@@ -91,7 +91,7 @@ fn pieces<T>(mut v: &mut [T], len: usize, count: usize) -> Vec<&mut [T]> {
 }
 
 /// How many threads condense `nn` intervals of `mn` stage unknowns.
-fn groups(nn: usize, mn: usize) -> usize {
+pub(super) fn groups(nn: usize, mn: usize) -> usize {
     #[cfg(feature = "rayon")]
     {
         let work = mn.saturating_mul(mn).saturating_mul(mn).saturating_mul(nn);

@@ -189,3 +189,108 @@ fn sparse_pattern_is_analysed_once() {
     }
     assert_eq!(sparse.sparse.analyses, 1);
 }
+
+/// Everything a factorisation and a correction produce, as bits.
+#[cfg(feature = "rayon")]
+fn factor_and_solve_bits<P: Problem + ?Sized>(sys: &mut System<'_, P>, x: &State) -> Vec<u64> {
+    let det = sys.factor(x).unwrap();
+    let mut r = sys.zero_residual();
+    sys.residual(x, &mut r).unwrap();
+    let mut d = sys.zero_state();
+    sys.solve(&r, &mut d).unwrap();
+    [det.sign, det.log_abs]
+        .iter()
+        .chain(&sys.wa)
+        .chain(&sys.gam)
+        .chain(&sys.pim)
+        .chain(&sys.dint)
+        .chain(&sys.dint_p)
+        .chain(&sys.fin)
+        .chain(&d.y)
+        .chain(&d.k)
+        .chain(&d.p)
+        .map(|v| v.to_bits())
+        .chain(sys.wpiv.iter().map(|&i| i as u64))
+        .collect()
+}
+
+/// With the `rayon` feature the intervals are condensed on every thread of
+/// the pool; the factorisation, the correction and a whole solve are the
+/// same bit for bit on 1, 2 and 3 threads (1 is the serial code path, 3
+/// splits the intervals unevenly).
+#[cfg(feature = "rayon")]
+#[test]
+fn parallel_condensation_is_bit_identical() {
+    use crate::bvp::Collocation;
+    use crate::bvp::classic::Coupled13;
+    let on = |threads: usize, f: &(dyn Fn() -> Vec<u64> + Sync)| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(f)
+    };
+    // The 13-dimensional system with its analytic Jacobian, N = 50, a free
+    // parameter and a border row.
+    let coupled = || {
+        let nn = 50;
+        let t: Vec<f64> = (0..=nn).map(|j| j as f64 / nn as f64).collect();
+        let big = Coupled13::new();
+        let mut sys = System::new(&big, t, Tableau::new(4), vec![0], 1).unwrap();
+        assert_eq!(
+            super::condense::groups(nn, 52),
+            rayon::current_num_threads()
+        );
+        let mut x = sys.zero_state();
+        for (i, v) in x.y.iter_mut().enumerate() {
+            *v = 0.01 * (i as f64).sin();
+        }
+        x.p[0] = 0.3;
+        for (i, v) in sys.border.coef_y.iter_mut().enumerate() {
+            *v = 1e-3 * (i as f64 * 0.1).cos();
+        }
+        sys.border.coef_q[0] = 1.0;
+        factor_and_solve_bits(&mut sys, &x)
+    };
+    // Bratu with finite-difference Jacobians, an integral condition, two
+    // free parameters and a border row, on enough intervals to go parallel.
+    let bratu = || {
+        let nn = 5000;
+        let t: Vec<f64> = (0..=nn).map(|j| j as f64 / nn as f64).collect();
+        let prob = Bratu(true);
+        let mut sys = System::new(&prob, t, Tableau::new(3), vec![0, 1], 1).unwrap();
+        assert_eq!(super::condense::groups(nn, 6), rayon::current_num_threads());
+        let mut x = sys.zero_state();
+        for (i, v) in x.y.iter_mut().enumerate() {
+            *v = 0.1 * (i as f64 * 1e-3).sin();
+        }
+        x.p[0] = 1.3;
+        x.p[1] = -0.4;
+        for (i, v) in sys.border.coef_y.iter_mut().enumerate() {
+            *v = 1e-4 * (i as f64 * 1e-2).cos();
+        }
+        sys.border.coef_q[0] = 0.5;
+        factor_and_solve_bits(&mut sys, &x)
+    };
+    // A whole Newton solve.
+    let solve = || {
+        let sol = Collocation::new()
+            .intervals(50)
+            .solve(&Coupled13::new(), |_s: f64| [0.0; 13], &[0.3])
+            .unwrap();
+        (0..=50)
+            .flat_map(|j| {
+                sol.at_mesh(j)
+                    .iter()
+                    .map(|v| v.to_bits())
+                    .collect::<Vec<_>>()
+            })
+            .collect()
+    };
+    for case in [&coupled as &(dyn Fn() -> Vec<u64> + Sync), &bratu, &solve] {
+        let serial = on(1, case);
+        for threads in [2, 3] {
+            assert!(serial == on(threads, case), "{threads} threads differ");
+        }
+    }
+}
