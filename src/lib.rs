@@ -84,6 +84,7 @@ pub mod special;
 pub mod spring;
 
 pub(crate) mod linalg;
+pub(crate) mod quadrature;
 
 pub use curve::{Fold, FoldKind, ForceExtension, ForcePoint};
 
