@@ -30,17 +30,19 @@ use crate::linalg::{Breakdown, DenseWorkspace, Det, lu_panel, lu_solve_block, so
 /// ones faer's SIMD kernels (whose call overhead dominates tiny blocks).
 pub(super) const SMALL_BLOCK: usize = 24;
 
-/// Below this many flops of block LUs, (m n)³ N, the condensation stays on
-/// one thread: the pool's wake-up (tens of µs) would cost more than it
+/// Below about this many flops per call the per-interval work stays on one
+/// thread: waking the pool (µs to tens of µs) would cost more than it
 /// saves.
 #[cfg(feature = "rayon")]
-const PARALLEL_WORK: usize = 1 << 20;
+const PARALLEL_WORK: usize = 1 << 17;
 
 /// Scratch of one thread of the condensation.
 pub(super) struct Workspace {
     deriv: PointDerivatives,
     pinv: Vec<usize>,
     dense: DenseWorkspace,
+    /// Length m n, for solves with a block.
+    pub(super) tmp: Vec<f64>,
 }
 
 impl Workspace {
@@ -49,6 +51,7 @@ impl Workspace {
             deriv: PointDerivatives::new(n, np, nint),
             pinv: vec![0; m * n],
             dense: DenseWorkspace::new(m * n, n + nq),
+            tmp: vec![0.0; m * n],
         }
     }
 }
@@ -80,7 +83,7 @@ struct Interval<'s> {
 }
 
 /// `v` cut into `count` consecutive pieces of length `len` (which may be 0).
-fn pieces<T>(mut v: &mut [T], len: usize, count: usize) -> Vec<&mut [T]> {
+pub(super) fn pieces<T>(mut v: &mut [T], len: usize, count: usize) -> Vec<&mut [T]> {
     let mut out = Vec::with_capacity(count);
     for _ in 0..count {
         let (head, tail) = v.split_at_mut(len);
@@ -90,17 +93,42 @@ fn pieces<T>(mut v: &mut [T], len: usize, count: usize) -> Vec<&mut [T]> {
     out
 }
 
-/// How many threads condense `nn` intervals of `mn` stage unknowns.
-pub(super) fn groups(nn: usize, mn: usize) -> usize {
+/// How many threads share `nn` intervals of about `flops` each: one below
+/// [`PARALLEL_WORK`] in all or without the `rayon` feature, else every
+/// thread of the current pool.
+pub(super) fn groups(nn: usize, flops: usize) -> usize {
     #[cfg(feature = "rayon")]
     {
-        let work = mn.saturating_mul(mn).saturating_mul(mn).saturating_mul(nn);
-        if work >= PARALLEL_WORK {
+        if flops.saturating_mul(nn) >= PARALLEL_WORK {
             return rayon::current_num_threads().clamp(1, nn.max(1));
         }
     }
-    let _ = (nn, mn);
+    let _ = (nn, flops);
     1
+}
+
+/// Runs `f` on every item (one per interval, in order) with a workspace:
+/// in `groups` contiguous groups on rayon's pool, or on this thread. `f`
+/// must only write to its item and workspace, so that the result does not
+/// depend on the grouping.
+pub(super) fn for_each_interval<T: Send>(
+    items: &mut [T],
+    work: &mut [Workspace],
+    groups: usize,
+    f: impl Fn(&mut T, &mut Workspace) + Sync,
+) {
+    #[cfg(feature = "rayon")]
+    if groups > 1 {
+        use rayon::prelude::*;
+        items
+            .par_chunks_mut(items.len().div_ceil(groups))
+            .zip(work.par_iter_mut())
+            .for_each(|(group, ws)| group.iter_mut().for_each(|it| f(it, ws)));
+        return;
+    }
+    let _ = groups;
+    let ws = &mut work[0];
+    items.iter_mut().for_each(|it| f(it, ws));
 }
 
 /// Jacobian blocks of interval `iv` and, with `sh.factor`, their
@@ -280,17 +308,23 @@ impl<P: Problem + ?Sized> System<'_, P> {
         self.factor_border()
     }
 
+    /// At least `groups` workspaces.
+    pub(super) fn reserve_work(&mut self, groups: usize) {
+        let (n, m, nq, nint, np) = (self.n, self.m, self.nq, self.nint, self.np);
+        while self.work.len() < groups.max(1) {
+            self.work.push(Workspace::new(n, np, nint, m, nq));
+        }
+    }
+
     /// Every interval's Jacobian blocks (and with `factor` their
     /// condensation); the integral rows' parameter columns summed in
     /// interval order. Returns the product of the block determinants.
     fn condense_intervals(&mut self, ycol: &[f64], p: &[f64], factor: bool) -> Result<Det> {
-        let (n, m, nq, nn, nint, np) = (self.n, self.m, self.nq, self.nn, self.nint, self.np);
+        let (n, m, nq, nn, nint) = (self.n, self.m, self.nq, self.nn, self.nint);
         let mn = m * n;
         let wcols = mn + n + nq;
-        let groups = groups(nn, mn);
-        while self.work.len() < groups {
-            self.work.push(Workspace::new(n, np, nint, m, nq));
-        }
+        let groups = groups(nn, mn * mn * mn);
+        self.reserve_work(groups);
         let shared = Shared {
             problem: self.problem,
             t: &self.t,
@@ -322,26 +356,9 @@ impl<P: Problem + ?Sized> System<'_, P> {
                 det: Ok(Det::ONE),
             })
             .collect();
-        let shared = &shared;
-        if groups > 1 {
-            #[cfg(feature = "rayon")]
-            {
-                use rayon::prelude::*;
-                intervals
-                    .par_chunks_mut(nn.div_ceil(groups))
-                    .zip(self.work.par_iter_mut())
-                    .for_each(|(group, ws)| {
-                        for iv in group {
-                            condense_interval(shared, iv, ws);
-                        }
-                    });
-            }
-        } else {
-            let ws = &mut self.work[0];
-            for iv in &mut intervals {
-                condense_interval(shared, iv, ws);
-            }
-        }
+        for_each_interval(&mut intervals, &mut self.work, groups, |iv, ws| {
+            condense_interval(&shared, iv, ws);
+        });
         let mut det = Det::ONE;
         for iv in &intervals {
             match iv.det {

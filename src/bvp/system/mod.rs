@@ -170,7 +170,7 @@ pub(crate) struct System<'a, P: Problem + ?Sized> {
     dcur: Vec<f64>,
     cbuf: Vec<f64>,
     // solve: right-hand sides through the condensation.
-    tmp: Vec<f64>,
+    kdense: Vec<f64>,
     kap: Vec<f64>,
     rho: Vec<f64>,
     rtop: Vec<f64>,
@@ -327,7 +327,7 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
             dz: vec![0.0; nd * nz],
             dcur: vec![0.0; nd * n],
             cbuf: vec![0.0; nd * (n + nq)],
-            tmp: vec![0.0; mn],
+            kdense: vec![0.0; nn * nd],
             kap: vec![0.0; nn * mn],
             rho: vec![0.0; nn * n],
             rtop: vec![0.0; nn * n],

@@ -4,11 +4,66 @@
 //! and the interior mesh values and stage derivatives follow by back
 //! substitution.
 
-use super::condense::SMALL_BLOCK;
+use super::condense::{SMALL_BLOCK, for_each_interval, groups, pieces};
 use super::{LinearSolver, Residual, State, System};
 use crate::bvp::problem::Problem;
+use crate::bvp::tableau::Tableau;
 use crate::error::{Error, Result};
 use crate::linalg::{apply_lower, lu_solve_vec, solve_upper};
+
+/// What every interval reads when the right-hand side is condensed.
+struct Stage<'s> {
+    t: &'s [f64],
+    tab: &'s Tableau,
+    wa: &'s [f64],
+    wpiv: &'s [usize],
+    fmat: &'s [f64],
+    stage: &'s [f64],
+    cont: &'s [f64],
+    n: usize,
+    nd: usize,
+    wcols: usize,
+}
+
+/// Interval j's κ_j = W_j⁻¹(−r_stage), ρ_j = −r_cont + h_j Σ_k b_k κ_jk and
+/// its share F_j κ_j of the dense rows (`tmp`: scratch of length m n).
+fn condense_rhs(
+    sh: &Stage<'_>,
+    j: usize,
+    kap: &mut [f64],
+    rho: &mut [f64],
+    kdense: &mut [f64],
+    tmp: &mut [f64],
+) {
+    let (n, nd, m) = (sh.n, sh.nd, sh.tab.m);
+    let mn = m * n;
+    let h = sh.t[j + 1] - sh.t[j];
+    for (kv, v) in kap.iter_mut().zip(&sh.stage[j * mn..(j + 1) * mn]) {
+        *kv = -v;
+    }
+    let wa = &sh.wa[j * mn * sh.wcols..(j + 1) * mn * sh.wcols];
+    let piv = &sh.wpiv[j * mn..(j + 1) * mn];
+    if mn <= SMALL_BLOCK {
+        apply_lower(wa, mn, mn, piv, kap);
+        solve_upper(wa, mn, mn, kap);
+    } else {
+        lu_solve_vec(wa, mn, piv, kap, tmp);
+    }
+    for i in 0..n {
+        let mut s = -sh.cont[j * n + i];
+        for k in 0..m {
+            s += h * sh.tab.b[k] * kap[k * n + i];
+        }
+        rho[i] = s;
+    }
+    let f = &sh.fmat[j * nd * mn..(j + 1) * nd * mn];
+    kdense.fill(0.0);
+    for (i, kv) in kap.iter().enumerate() {
+        for (d, fv) in kdense.iter_mut().zip(&f[i * nd..(i + 1) * nd]) {
+            *d += fv * kv;
+        }
+    }
+}
 
 impl<P: Problem + ?Sized> System<'_, P> {
     /// Solves J δ = −r with the current factorisation (condensed path) or
@@ -25,36 +80,37 @@ impl<P: Problem + ?Sized> System<'_, P> {
         let wcols = mn + n + nq;
         let rows = 2 * n;
         let pcols = 2 * n + nz;
-        // 1. κ_j, ρ_j and the dense rhs.
+        // 1. κ_j, ρ_j and each interval's share of the dense rhs.
+        let groups = groups(nn, 2 * mn * mn);
+        self.reserve_work(groups);
+        let shared = Stage {
+            t: &self.t,
+            tab: &self.tab,
+            wa: &self.wa,
+            wpiv: &self.wpiv,
+            fmat: &self.fmat,
+            stage: &r.stage,
+            cont: &r.cont,
+            n,
+            nd,
+            wcols,
+        };
+        let mut intervals: Vec<_> = pieces(&mut self.kap, mn, nn)
+            .into_iter()
+            .zip(pieces(&mut self.rho, n, nn))
+            .zip(pieces(&mut self.kdense, nd, nn))
+            .enumerate()
+            .collect();
+        for_each_interval(&mut intervals, &mut self.work, groups, |it, ws| {
+            let (j, ((kap, rho), kd)) = it;
+            condense_rhs(&shared, *j, kap, rho, kd, &mut ws.tmp);
+        });
         for (d, v) in self.drhs.iter_mut().zip(&r.dense) {
             *d = -v;
         }
-        for j in 0..nn {
-            let h = self.h(j);
-            let kap = &mut self.kap[j * mn..(j + 1) * mn];
-            for (kv, v) in kap.iter_mut().zip(&r.stage[j * mn..(j + 1) * mn]) {
-                *kv = -v;
-            }
-            let wa = &self.wa[j * mn * wcols..(j + 1) * mn * wcols];
-            let piv = &self.wpiv[j * mn..(j + 1) * mn];
-            if mn <= SMALL_BLOCK {
-                apply_lower(wa, mn, mn, piv, kap);
-                solve_upper(wa, mn, mn, kap);
-            } else {
-                lu_solve_vec(wa, mn, piv, kap, &mut self.tmp);
-            }
-            for i in 0..n {
-                let mut s = -r.cont[j * n + i];
-                for k in 0..m {
-                    s += h * self.tab.b[k] * kap[k * n + i];
-                }
-                self.rho[j * n + i] = s;
-            }
-            let f = &self.fmat[j * nd * mn..(j + 1) * nd * mn];
-            for (i, kv) in kap.iter().enumerate() {
-                for (d, fv) in self.drhs.iter_mut().zip(&f[i * nd..(i + 1) * nd]) {
-                    *d -= fv * kv;
-                }
+        for kd in self.kdense.chunks_exact(nd.max(1)) {
+            for (d, v) in self.drhs.iter_mut().zip(kd) {
+                *d -= v;
             }
         }
         // 2. Forward sweep through the panels.
@@ -118,13 +174,16 @@ impl<P: Problem + ?Sized> System<'_, P> {
             solve_upper(panel, rows, n, w);
             out.y[j * n..(j + 1) * n].copy_from_slice(w);
         }
-        // 5. Stage derivatives.
-        for j in 0..nn {
-            let wa = &self.wa[j * mn * wcols..(j + 1) * mn * wcols];
-            let dk = &mut out.k[j * mn..(j + 1) * mn];
-            dk.copy_from_slice(&self.kap[j * mn..(j + 1) * mn]);
+        // 5. Stage derivatives dK_j = κ_j + G_j dY_j + Q_j dq.
+        let (wa, kap, y) = (&self.wa, &self.kap, &out.y);
+        let mut intervals: Vec<_> = pieces(&mut out.k, mn, nn).into_iter().enumerate().collect();
+        for_each_interval(&mut intervals, &mut self.work, groups, |it, _| {
+            let (j, dk) = it;
+            let j = *j;
+            let wa = &wa[j * mn * wcols..(j + 1) * mn * wcols];
+            dk.copy_from_slice(&kap[j * mn..(j + 1) * mn]);
             for c in 0..n {
-                let yv = out.y[j * n + c];
+                let yv = y[j * n + c];
                 for (d, g) in dk.iter_mut().zip(&wa[(mn + c) * mn..(mn + c + 1) * mn]) {
                     *d += g * yv;
                 }
@@ -138,7 +197,7 @@ impl<P: Problem + ?Sized> System<'_, P> {
                     *d += g * qv;
                 }
             }
-        }
+        });
         if out.y.iter().chain(&out.k).any(|v| !v.is_finite()) {
             return Err(Error::NonFinite {
                 what: "Jacobian",

@@ -77,3 +77,51 @@ fn troesch_parts() {
         ts * 1e6
     );
 }
+
+/// User + system CPU seconds of this process so far (from /proc/self/stat,
+/// in clock ticks of 10 ms).
+#[cfg(feature = "rayon")]
+fn cpu_seconds() -> f64 {
+    let s = std::fs::read_to_string("/proc/self/stat").unwrap_or_default();
+    let after = s.rsplit(')').next().unwrap_or("");
+    let f: Vec<f64> = after
+        .split_whitespace()
+        .map(|v| v.parse().unwrap_or(0.0))
+        .collect();
+    (f.get(11).copied().unwrap_or(0.0) + f.get(12).copied().unwrap_or(0.0)) / 100.0
+}
+
+#[test]
+#[cfg(feature = "rayon")]
+#[ignore = "timing probe: cargo test --release --features rayon --lib system::timing -- --ignored --nocapture"]
+fn parallel_factor() {
+    let big = Coupled13::new();
+    for nn in [50usize, 200, 800] {
+        let t: Vec<f64> = (0..=nn).map(|j| j as f64 / nn as f64).collect();
+        let mut sys = System::new(&big, t, Tableau::new(4), vec![0], 1).unwrap();
+        let mut x = sys.zero_state();
+        for (i, v) in x.y.iter_mut().enumerate() {
+            *v = 0.01 * i as f64;
+        }
+        sys.border.coef_q[0] = 1.0;
+        let reps = (20_000 / nn) as u32;
+        for threads in [1, 2, 1, 2] {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap();
+            let c0 = cpu_seconds();
+            let wall = pool.install(|| {
+                mean_seconds(reps, || {
+                    sys.factor(&x).unwrap();
+                })
+            });
+            let cpu = (cpu_seconds() - c0) / f64::from(reps);
+            eprintln!(
+                "N={nn} threads={threads}: factor {:.1} µs wall, {:.1} µs CPU",
+                wall * 1e6,
+                cpu * 1e6
+            );
+        }
+    }
+}
