@@ -1,6 +1,8 @@
 //! Benches of the collocation solver and continuation.
 //!
 //! Run: `cargo bench --bench bvp -- --warm-up-time 1 --measurement-time 3`
+//! The parallel condensation (`rayon` feature), 1 thread against 2:
+//! `cargo bench --bench bvp --features rayon -- parallel --warm-up-time 1 --measurement-time 2`
 
 use std::hint::black_box;
 
@@ -150,11 +152,96 @@ fn continuation_13(c: &mut Criterion) {
     g.finish();
 }
 
+/// Minimum over `rounds` of the time of `f` on each pool, the pools taking
+/// turns so that machine load hits both alike.
+#[cfg(feature = "rayon")]
+fn interleaved_min(pools: &[rayon::ThreadPool], rounds: usize, f: &(dyn Fn() + Sync)) -> Vec<f64> {
+    let mut best = vec![f64::INFINITY; pools.len()];
+    for _ in 0..rounds {
+        for (b, pool) in best.iter_mut().zip(pools) {
+            let t = std::time::Instant::now();
+            pool.install(f);
+            *b = b.min(t.elapsed().as_secs_f64());
+        }
+    }
+    best
+}
+
+/// The `rayon` feature: the intervals are condensed on every thread of the
+/// pool. One Newton step of the 13-dimensional system and a 100-step
+/// continuation on pools of 1 and 2 threads: first the interleaved minimum
+/// (printed), then criterion per pool.
+#[cfg(feature = "rayon")]
+fn parallel_condensation(c: &mut Criterion) {
+    let problem = Coupled13::new();
+    let pools: Vec<rayon::ThreadPool> = [1, 2]
+        .iter()
+        .map(|&k| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(k)
+                .build()
+                .unwrap()
+        })
+        .collect();
+    let step = |n: usize| {
+        let solver = Collocation::new().points(4).intervals(n).max_newton(1);
+        move || {
+            let r = solver.solve(&Coupled13::new(), |_s: f64| [0.0; 13], black_box(&[0.3]));
+            black_box(r.is_err());
+        }
+    };
+    for n in [50usize, 200, 800] {
+        let t = interleaved_min(&pools, 20, &step(n));
+        eprintln!(
+            "parallel newton step 13-dim N={n}: 1 thread {:.3} ms, 2 threads {:.3} ms, speed-up {:.2}x",
+            t[0] * 1e3,
+            t[1] * 1e3,
+            t[0] / t[1]
+        );
+    }
+    let start = Collocation::new()
+        .intervals(50)
+        .solve(&problem, |_s: f64| [0.0; 13], &[0.0])
+        .unwrap();
+    let cont = Continuation::new(0)
+        .solver(Collocation::new().intervals(50))
+        .step(0.05)
+        .step_bounds(1e-8, 0.05)
+        .max_steps(100);
+    let run = || {
+        let br = cont.run(&problem, black_box(&start), ()).unwrap();
+        black_box(br.points().len());
+    };
+    let t = interleaved_min(&pools, 5, &run);
+    eprintln!(
+        "parallel continuation 13-dim N=50, 100 steps: 1 thread {:.1} ms, 2 threads {:.1} ms, speed-up {:.2}x",
+        t[0] * 1e3,
+        t[1] * 1e3,
+        t[0] / t[1]
+    );
+    let mut g = c.benchmark_group("parallel_newton_step_13dim_m4");
+    for n in [50usize, 200, 800] {
+        let f = step(n);
+        for (k, pool) in pools.iter().enumerate() {
+            g.bench_with_input(
+                BenchmarkId::new(format!("threads_{}", k + 1), n),
+                &n,
+                |b, _| pool.install(|| b.iter(&f)),
+            );
+        }
+    }
+    g.finish();
+}
+
+#[cfg(not(feature = "rayon"))]
+fn parallel_condensation(_c: &mut Criterion) {}
+
 criterion_group!(
     benches,
     newton_step_13,
     bratu_continuation,
     versus_scipy,
-    continuation_13
+    continuation_13,
+    parallel_condensation
 );
 criterion_main!(benches);

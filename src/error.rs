@@ -117,7 +117,7 @@ pub enum Error {
         "singular Jacobian in the {block} (block {index}): the linearised problem has no unique solution there"
     )]
     SingularJacobian {
-        /// "interval block", "mesh elimination" or "boundary block".
+        /// "interval block", "mesh elimination", "boundary block" or "sparse system".
         block: &'static str,
         /// The interval or row index where the zero pivot appeared.
         index: u64,
@@ -156,6 +156,23 @@ pub enum Error {
         estimate: f64,
         /// The number of intervals used.
         intervals: u64,
+    },
+
+    /// The collocation system would need more memory than hockle allows
+    /// itself for one system.
+    #[error(
+        "a collocation system of {intervals} intervals for {dim} ODEs needs about {bytes} bytes \
+         of workspace; the limit is {limit} bytes: use fewer intervals or collocation points"
+    )]
+    SystemTooLarge {
+        /// Mesh intervals N.
+        intervals: u64,
+        /// ODEs n.
+        dim: u64,
+        /// Workspace the system would need (saturated at `u64::MAX`).
+        bytes: u64,
+        /// The limit, 2³¹ bytes.
+        limit: u64,
     },
 
     // ----- continuation --------------------------------------------------

@@ -86,6 +86,7 @@ pub mod spring;
 mod stiffness;
 
 pub(crate) mod linalg;
+pub(crate) mod quadrature;
 
 pub use curve::{Fold, FoldKind, ForceExtension, ForcePoint, ForceScale};
 pub use load::{Control, Target};

@@ -256,48 +256,97 @@ pub(crate) fn lu_solve_vec(a: &[f64], n: usize, perm: &[usize], v: &mut [f64], t
     v[..n].copy_from_slice(&tmp[..n]);
 }
 
-/// Solves the square sparse system A x = b (A given by triplets, duplicates
-/// summed) with faer's sparse LU with partial pivoting. Returns `None` when
-/// the factorisation fails or the solution is not finite, or its residual is
-/// not small (faer can return `inf` silently on singular matrices).
-pub(crate) fn sparse_solve(
+/// The sparsity pattern of a square sparse matrix with its symbolic LU
+/// (column ordering and elimination structure): computed once per pattern,
+/// then [`factor`](Self::factor) costs one numeric factorisation per matrix
+/// with that pattern (faer's symbolic/numeric split).
+pub(crate) struct SparsePattern {
     n: usize,
-    entries: &[(usize, usize, f64)],
-    b: &[f64],
-) -> Option<Vec<f64>> {
-    use faer::sparse::{SparseColMat, Triplet};
-    use std::collections::BTreeMap;
-    let mut acc: BTreeMap<(usize, usize), f64> = BTreeMap::new();
-    for &(i, j, v) in entries {
-        *acc.entry((j, i)).or_insert(0.0) += v;
+    entries: Vec<(usize, usize)>,
+    symbolic: faer::sparse::SymbolicSparseColMat<usize>,
+    argsort: faer::sparse::Argsort<usize>,
+    lu: faer::sparse::linalg::solvers::SymbolicLu<usize>,
+}
+
+impl SparsePattern {
+    /// The pattern of the `n × n` matrix whose entries (row, column) are
+    /// listed (duplicates are summed by [`factor`](Self::factor)). `None`
+    /// if an index is out of range or faer cannot analyse it.
+    pub(crate) fn new(n: usize, entries: &[(usize, usize)]) -> Option<SparsePattern> {
+        use faer::sparse::{Pair, SymbolicSparseColMat};
+        let idx: Vec<Pair<usize, usize>> = entries
+            .iter()
+            .map(|&(row, col)| Pair { row, col })
+            .collect();
+        let (symbolic, argsort) = SymbolicSparseColMat::try_new_from_indices(n, n, &idx).ok()?;
+        let lu = faer::sparse::linalg::solvers::SymbolicLu::try_new(symbolic.as_ref()).ok()?;
+        Some(SparsePattern {
+            n,
+            entries: entries.to_vec(),
+            symbolic,
+            argsort,
+            lu,
+        })
     }
-    let trip: Vec<Triplet<usize, usize, f64>> = acc
-        .iter()
-        .map(|(&(j, i), &v)| Triplet::new(i, j, v))
-        .collect();
-    let mat = SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &trip).ok()?;
-    let lu = mat.sp_lu().ok()?;
-    let mut rhs = faer::Mat::<f64>::from_fn(n, 1, |i, _| b[i]);
-    {
+
+    /// Whether this is the pattern of `n` and `entries`.
+    pub(crate) fn is(&self, n: usize, entries: &[(usize, usize)]) -> bool {
+        self.n == n && self.entries == entries
+    }
+
+    /// The numeric LU with partial pivoting of the matrix with this pattern
+    /// and `values` (one per entry, in the order the entries were given).
+    pub(crate) fn factor(&self, values: &[f64]) -> Option<SparseLu> {
+        use faer::sparse::SparseColMat;
+        use faer::sparse::linalg::solvers::Lu;
+        if values.len() != self.entries.len() {
+            return None;
+        }
+        let mat =
+            SparseColMat::new_from_argsort(self.symbolic.clone(), &self.argsort, values).ok()?;
+        let lu = Lu::try_new_with_symbolic(self.lu.clone(), mat.as_ref()).ok()?;
+        Some(SparseLu { mat, lu })
+    }
+}
+
+/// A numeric sparse LU and the matrix it factors.
+pub(crate) struct SparseLu {
+    mat: faer::sparse::SparseColMat<usize, f64>,
+    lu: faer::sparse::linalg::solvers::Lu<usize, f64>,
+}
+
+impl SparseLu {
+    /// Solves A x = b. `None` when the solution is not finite or its
+    /// residual is not small (faer can return `inf` silently on singular
+    /// matrices).
+    pub(crate) fn solve(&self, b: &[f64]) -> Option<Vec<f64>> {
         use faer::linalg::solvers::SolveCore;
-        lu.solve_in_place_with_conj(faer::Conj::No, rhs.as_mut());
+        let n = b.len();
+        let mut rhs = faer::Mat::<f64>::from_fn(n, 1, |i, _| b[i]);
+        self.lu
+            .solve_in_place_with_conj(faer::Conj::No, rhs.as_mut());
+        let x: Vec<f64> = (0..n).map(|i| rhs[(i, 0)]).collect();
+        if x.iter().any(|v| !v.is_finite()) {
+            return None;
+        }
+        // Residual check: ‖Ax − b‖∞ ≤ 1e-8 (‖A‖∞‖x‖∞ + ‖b‖∞).
+        let mut r: Vec<f64> = b.iter().map(|v| -v).collect();
+        let mut row_norm = vec![0.0_f64; n];
+        let a = self.mat.as_ref();
+        let (col_ptr, row_idx, val) = (a.symbolic().col_ptr(), a.symbolic().row_idx(), a.val());
+        for (j, xj) in x.iter().enumerate() {
+            for p in col_ptr[j]..col_ptr[j + 1] {
+                let i = row_idx[p];
+                r[i] += val[p] * xj;
+                row_norm[i] += val[p].abs();
+            }
+        }
+        let an = row_norm.iter().fold(0.0_f64, |m, v| m.max(*v));
+        let xn = x.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+        let bn = b.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+        let rn = r.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+        (rn <= 1e-8 * (an * xn + bn)).then_some(x)
     }
-    let x: Vec<f64> = (0..n).map(|i| rhs[(i, 0)]).collect();
-    if x.iter().any(|v| !v.is_finite()) {
-        return None;
-    }
-    // Residual check: ‖Ax − b‖∞ ≤ 1e-8 (‖A‖∞‖x‖∞ + ‖b‖∞).
-    let mut r: Vec<f64> = b.iter().map(|v| -v).collect();
-    let mut row_norm = vec![0.0_f64; n];
-    for (&(j, i), &v) in &acc {
-        r[i] += v * x[j];
-        row_norm[i] += v.abs();
-    }
-    let an = row_norm.iter().fold(0.0_f64, |m, v| m.max(*v));
-    let xn = x.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
-    let bn = b.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
-    let rn = r.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
-    (rn <= 1e-8 * (an * xn + bn)).then_some(x)
 }
 
 #[cfg(test)]
@@ -341,12 +390,33 @@ mod tests {
             (2, 0, 3.0),
             (2, 2, 1.0),
         ];
-        let x = sparse_solve(3, &e, &[7.0, 3.0, 6.0]).unwrap();
+        let solve = |n: usize, e: &[(usize, usize, f64)], b: &[f64]| {
+            let idx: Vec<(usize, usize)> = e.iter().map(|&(i, j, _)| (i, j)).collect();
+            let val: Vec<f64> = e.iter().map(|t| t.2).collect();
+            SparsePattern::new(n, &idx)?.factor(&val)?.solve(b)
+        };
+        let x = solve(3, &e, &[7.0, 3.0, 6.0]).unwrap();
         for (x, e) in x.iter().zip([1.0, 2.0, 3.0]) {
             assert!((x - e).abs() < 1e-13);
         }
         let singular = [(0, 0, 1.0), (0, 1, 2.0), (1, 0, 2.0), (1, 1, 4.0)];
-        assert!(sparse_solve(2, &singular, &[1.0, 1.0]).is_none());
+        assert!(solve(2, &singular, &[1.0, 1.0]).is_none());
+        // One pattern, two matrices: duplicates are summed, values follow
+        // the entry order. A = [[2, 1], [1, 3]] then [[4, 0], [1, 1]].
+        let idx = [(0, 0), (1, 0), (0, 1), (1, 1), (0, 0)];
+        let pattern = SparsePattern::new(2, &idx).unwrap();
+        let x = pattern
+            .factor(&[1.0, 1.0, 1.0, 3.0, 1.0])
+            .unwrap()
+            .solve(&[3.0, 4.0])
+            .unwrap();
+        assert!((x[0] - 1.0).abs() < 1e-14 && (x[1] - 1.0).abs() < 1e-14);
+        let x = pattern
+            .factor(&[3.0, 1.0, 0.0, 1.0, 1.0])
+            .unwrap()
+            .solve(&[4.0, 3.0])
+            .unwrap();
+        assert!((x[0] - 1.0).abs() < 1e-14 && (x[1] - 2.0).abs() < 1e-14);
     }
 }
 

@@ -19,19 +19,30 @@ pub struct Mesh {
     points: Vec<f64>,
 }
 
+/// The interval-count check shared by the constructors.
+fn check_intervals(intervals: usize) -> Result<()> {
+    if (1..=Mesh::MAX_INTERVALS).contains(&intervals) {
+        return Ok(());
+    }
+    Err(Error::InvalidCount {
+        name: "intervals",
+        value: intervals as u64,
+        allowed: "1..=1_000_000 (Mesh::MAX_INTERVALS)",
+    })
+}
+
 impl Mesh {
+    /// The most intervals a mesh may have, 10⁶ (8 MB of mesh points; the
+    /// collocation system on it is limited separately, to 2 GiB of
+    /// workspace, see [`Error::SystemTooLarge`]).
+    pub const MAX_INTERVALS: usize = 1_000_000;
+
     /// N equal intervals.
     ///
     /// # Errors
-    /// [`Error::InvalidCount`] if `intervals` is 0.
+    /// [`Error::InvalidCount`] unless 1 ≤ N ≤ [`Mesh::MAX_INTERVALS`].
     pub fn uniform(intervals: usize) -> Result<Mesh> {
-        if intervals == 0 {
-            return Err(Error::InvalidCount {
-                name: "intervals",
-                value: 0,
-                allowed: "at least 1",
-            });
-        }
+        check_intervals(intervals)?;
         let n = intervals as f64;
         let mut points: Vec<f64> = (0..=intervals).map(|j| j as f64 / n).collect();
         points[intervals] = 1.0;
@@ -42,8 +53,11 @@ impl Mesh {
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] unless the points start at 0, end at 1 and
-    /// strictly increase (at least two points).
+    /// strictly increase (at least two points);
+    /// [`Error::InvalidCount`] for more than [`Mesh::MAX_INTERVALS`]
+    /// intervals.
     pub fn from_points(points: Vec<f64>) -> Result<Mesh> {
+        check_intervals(points.len().saturating_sub(1).max(1))?;
         if points.len() < 2 {
             return Err(Error::InvalidCount {
                 name: "mesh points",

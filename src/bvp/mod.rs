@@ -49,18 +49,22 @@
 
 #![allow(clippy::needless_range_loop)]
 
+mod adapt;
 pub mod classic;
+mod collocation;
+mod guess;
 mod mesh;
+mod newton;
 mod problem;
 mod solution;
-mod solver;
 pub(crate) mod system;
 mod tableau;
 
+pub use collocation::Collocation;
+pub use guess::InitialGuess;
 pub use mesh::Mesh;
 pub use problem::Problem;
 pub use solution::{NewtonStats, Solution};
-pub use solver::{Collocation, InitialGuess};
 pub use system::LinearSolver;
 
-pub(crate) use solver::{NewtonOptions, finish, newton, scaled_norm};
+pub(crate) use newton::{NewtonOptions, finish, newton, scaled_norm};

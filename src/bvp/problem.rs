@@ -25,7 +25,12 @@ use nalgebra::DMatrixViewMut;
 /// default, and the solver then uses finite differences. An implementation
 /// that returns `true` must have filled every entry of the matrices it was
 /// given (they arrive zeroed).
-pub trait Problem {
+///
+/// Problems are `Sync`: the collocation solver may evaluate one from
+/// several threads at once (the `rayon` feature condenses intervals in
+/// parallel). A problem that keeps counters or caches needs atomics or a
+/// `Mutex` for them.
+pub trait Problem: Sync {
     /// The number of ODEs, n.
     fn dim(&self) -> usize;
 

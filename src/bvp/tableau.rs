@@ -1,5 +1,7 @@
 //! Gauss–Legendre collocation coefficients on [0, 1].
 
+use crate::quadrature::GaussLegendre;
+
 /// The m-point Gauss–Legendre tableau: nodes c, weights b, the collocation
 /// matrix a_kl = ∫₀^{c_k} L_l(σ) dσ (L_l the Lagrange basis on c) and data
 /// for evaluating the collocation polynomial.
@@ -19,38 +21,12 @@ pub(crate) struct Tableau {
     pub error_constant: f64,
 }
 
-fn legendre(m: usize, x: f64) -> (f64, f64) {
-    // P_m(x) and P_m'(x) by the three-term recurrence.
-    let (mut p0, mut p1) = (1.0, x);
-    for j in 2..=m {
-        let jf = j as f64;
-        let p2 = ((2.0 * jf - 1.0) * x * p1 - (jf - 1.0) * p0) / jf;
-        p0 = p1;
-        p1 = p2;
-    }
-    let mf = m as f64;
-    let dp = mf * (x * p1 - p0) / (x * x - 1.0);
-    (p1, dp)
-}
-
 impl Tableau {
     pub(crate) fn new(m: usize) -> Tableau {
-        let mut c = vec![0.0; m];
-        let mut b = vec![0.0; m];
-        for i in 0..m {
-            let mut x = -(std::f64::consts::PI * (i as f64 + 0.75) / (m as f64 + 0.5)).cos();
-            for _ in 0..100 {
-                let (p, dp) = legendre(m, x);
-                let dx = p / dp;
-                x -= dx;
-                if dx.abs() < 1e-16 {
-                    break;
-                }
-            }
-            let (_, dp) = legendre(m, x);
-            c[i] = 0.5 * (1.0 + x);
-            b[i] = 1.0 / ((1.0 - x * x) * dp * dp);
-        }
+        let GaussLegendre {
+            nodes: c,
+            weights: b,
+        } = GaussLegendre::new(m);
         let mut lead = vec![0.0; m];
         for l in 0..m {
             let mut d = 1.0;

@@ -865,7 +865,7 @@ impl<'a, P: Problem + ?Sized> Trace<'a, P> {
                 t.scale(sgn / nrm);
                 trace.t0 = t;
                 trace.set_tangent_border(0.0);
-                trace.det0 = trace.sys.phase_c()?;
+                trace.det0 = trace.sys.factor_border()?;
                 trace.factored_at_x0 = true;
             }
             Some((tangent, direction, arclength)) => {
@@ -1074,7 +1074,7 @@ impl<'a, P: Problem + ?Sized> Trace<'a, P> {
         let t0 = self.t0.clone();
         x.axpy(ds, &t0, &self.sys.free.clone());
         if reuse {
-            self.sys.phase_c()?;
+            self.sys.factor_border()?;
         }
         let stats = newton(&mut self.sys, &mut x, self.opts, reuse)?;
         self.newton_iterations += u64::from(stats.iterations);

@@ -6,6 +6,7 @@ use nalgebra::Point2;
 
 use super::integrals::{SMALL_M, i_between, i_period};
 use crate::error::{Error, Result};
+use crate::quadrature::gauss_legendre;
 use crate::special::{Jacobi, Modulus, ellip_e, ellip_e_inc, jacobi, jacobi_epsilon};
 
 /// The shape class of a solution (the paper's Greek letters).
@@ -501,36 +502,6 @@ pub(crate) enum Ends {
     /// α-family member c with the Jacobi functions at the end distance t
     /// and E(k) if known (NaN otherwise).
     Alpha { c: f64, jac: Jacobi, e: f64 },
-}
-
-/// Composite 8-point Gauss–Legendre quadrature of f over [a, b] with
-/// sub-intervals no longer than `h`.
-pub(crate) fn gauss_legendre(f: impl Fn(f64) -> f64, a: f64, b: f64, h: f64) -> f64 {
-    const X: [f64; 4] = [
-        0.183_434_642_495_649_8,
-        0.525_532_409_916_329,
-        0.796_666_477_413_626_7,
-        0.960_289_856_497_536_2,
-    ];
-    const W: [f64; 4] = [
-        0.362_683_783_378_362,
-        0.313_706_645_877_887_3,
-        0.222_381_034_453_374_5,
-        0.101_228_536_290_376_3,
-    ];
-    let pieces = (((b - a).abs() / h).ceil() as usize).clamp(1, 1 << 20);
-    let step = (b - a) / pieces as f64;
-    let mut total = 0.0;
-    for p in 0..pieces {
-        let c = a + (p as f64 + 0.5) * step;
-        let r = 0.5 * step;
-        let mut acc = 0.0;
-        for (x, w) in X.iter().zip(W.iter()) {
-            acc += w * (f(c - r * x) + f(c + r * x));
-        }
-        total += acc * r;
-    }
-    total
 }
 
 impl core::fmt::Display for Elastica {

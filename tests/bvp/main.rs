@@ -325,6 +325,145 @@ fn invalid_settings_are_typed_errors() {
     assert!(Mesh::from_points(vec![0.0, 0.5, 0.4, 1.0]).is_err());
     assert!(Mesh::from_points(vec![0.1, 1.0]).is_err());
     assert!(Mesh::uniform(0).is_err());
+    assert!(matches!(
+        Collocation::new().intervals(0).solve(&Linear, g, &[]),
+        Err(Error::InvalidCount {
+            name: "intervals",
+            value: 0,
+            ..
+        })
+    ));
+}
+
+/// A problem whose counts are whatever the test says (the equations are
+/// never evaluated: every case is refused before any work).
+struct Counts {
+    dim: usize,
+    boundary: usize,
+    integral: usize,
+}
+
+impl hockle::bvp::Problem for Counts {
+    fn dim(&self) -> usize {
+        self.dim
+    }
+    fn parameter_count(&self) -> usize {
+        0
+    }
+    fn boundary_count(&self) -> usize {
+        self.boundary
+    }
+    fn integral_count(&self) -> usize {
+        self.integral
+    }
+    fn rhs(&self, _s: f64, _y: &[f64], _p: &[f64], f: &mut [f64]) {
+        f.fill(0.0);
+    }
+    fn boundary(&self, _y0: &[f64], _y1: &[f64], _p: &[f64], g: &mut [f64]) {
+        g.fill(0.0);
+    }
+}
+
+/// Huge counts are typed errors before anything is allocated (before this
+/// change they aborted on allocation or panicked on an integer wrap), and
+/// `points(8)`/`intervals(0)` are refused before the first solve.
+#[test]
+fn hostile_counts_are_typed_errors() {
+    use hockle::Error;
+    let g = |_s: f64| [0.0, 0.0];
+    for n in [0, usize::MAX, u32::MAX as usize, Mesh::MAX_INTERVALS + 1] {
+        assert!(
+            matches!(
+                Mesh::uniform(n),
+                Err(Error::InvalidCount {
+                    name: "intervals",
+                    ..
+                })
+            ),
+            "Mesh::uniform({n})"
+        );
+        let r = Collocation::new().intervals(n).solve(&Linear, g, &[]);
+        assert!(
+            matches!(
+                r,
+                Err(Error::InvalidCount {
+                    name: "intervals",
+                    ..
+                })
+            ),
+            "intervals({n}): {r:?}"
+        );
+        let r = Collocation::new()
+            .max_intervals(n)
+            .tolerance(1e-300)
+            .solve(&Linear, g, &[]);
+        assert!(
+            matches!(
+                r,
+                Err(Error::InvalidCount {
+                    name: "max_intervals",
+                    ..
+                })
+            ),
+            "max_intervals({n}): {r:?}"
+        );
+    }
+    assert!(Mesh::uniform(Mesh::MAX_INTERVALS).is_ok());
+    for m in [0, 1, 8, usize::MAX] {
+        let r = Collocation::new().points(m).solve(&Linear, g, &[]);
+        assert!(
+            matches!(r, Err(Error::InvalidCount { name: "points", .. })),
+            "{r:?}"
+        );
+    }
+    let r = Collocation::new()
+        .max_newton(u32::MAX)
+        .solve(&Linear, g, &[]);
+    assert!(
+        matches!(
+            r,
+            Err(Error::InvalidCount {
+                name: "max_newton",
+                ..
+            })
+        ),
+        "{r:?}"
+    );
+    // Counts whose sums wrap: the ill-posed error, not a panic.
+    for (dim, boundary, integral) in [
+        (2, usize::MAX, 0),
+        (2, usize::MAX, 3),
+        (2, 1, usize::MAX),
+        (usize::MAX, 1, 1),
+        (usize::MAX, usize::MAX, 1),
+    ] {
+        let p = Counts {
+            dim,
+            boundary,
+            integral,
+        };
+        let r = Collocation::new().intervals(4).solve(&p, g, &[]);
+        assert!(
+            matches!(r, Err(Error::IllPosed { .. })),
+            "{dim} {boundary} {integral}: {r:?}"
+        );
+    }
+    // Well posed but too big to allocate: refused with the size it needed.
+    for (dim, intervals) in [(usize::MAX / 2, 4), (1 << 40, 4), (13, Mesh::MAX_INTERVALS)] {
+        let p = Counts {
+            dim,
+            boundary: dim,
+            integral: 0,
+        };
+        let r = Collocation::new()
+            .intervals(intervals)
+            .points(7)
+            .solve(&p, g, &[]);
+        assert!(
+            matches!(r, Err(Error::SystemTooLarge { bytes, limit, .. }) if bytes > limit),
+            "dim {dim}, N = {intervals}: {r:?}"
+        );
+    }
 }
 
 /// Peak resident memory of one Newton step of the 13-dimensional system.
