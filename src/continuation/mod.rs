@@ -55,6 +55,22 @@
 
 #![allow(clippy::needless_range_loop)]
 
-mod tracer;
+mod corrector;
+mod locate;
+mod norm;
+mod observer;
+mod point;
+mod run;
+mod settings;
+mod step_control;
+mod steps;
+mod switch;
+mod termination;
 
-pub use tracer::{Branch, Continuation, Direction, Observer, Point, PointKind, Termination, Trace};
+pub use observer::Observer;
+pub use point::{Point, PointKind};
+pub use run::Branch;
+pub use settings::Continuation;
+pub use steps::Trace;
+pub use switch::Direction;
+pub use termination::Termination;

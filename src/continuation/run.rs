@@ -1,0 +1,124 @@
+//! [`Continuation::run`]: a whole branch with its termination.
+
+use std::fmt;
+
+use super::{Continuation, Observer, Point, PointKind, Termination, Trace};
+use crate::bvp::{Problem, Solution};
+use crate::error::Result;
+
+/// The result of a run: every point in order and why it ended.
+#[derive(Debug, Clone)]
+pub struct Branch {
+    pub(super) points: Vec<Point>,
+    pub(super) termination: Termination,
+}
+
+impl Branch {
+    /// Every point, in order.
+    #[must_use]
+    pub fn points(&self) -> &[Point] {
+        &self.points
+    }
+
+    /// Why the run ended.
+    #[must_use]
+    pub fn termination(&self) -> &Termination {
+        &self.termination
+    }
+
+    /// The located special points, in order.
+    pub fn special_points(&self) -> impl Iterator<Item = &Point> {
+        self.points.iter().filter(|p| p.is_special())
+    }
+
+    /// The located folds.
+    pub fn folds(&self) -> impl Iterator<Item = &Point> {
+        self.points.iter().filter(|p| p.kind == PointKind::Fold)
+    }
+
+    /// The located branch points.
+    pub fn branch_points(&self) -> impl Iterator<Item = &Point> {
+        self.points
+            .iter()
+            .filter(|p| p.kind == PointKind::BranchPoint)
+    }
+
+    /// The last point.
+    #[must_use]
+    pub fn last(&self) -> Option<&Point> {
+        self.points.last()
+    }
+}
+
+impl fmt::Display for Branch {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(
+            f,
+            "branch of {} points; {}",
+            self.points.len(),
+            self.termination
+        )?;
+        for p in self.special_points() {
+            writeln!(f, "  {p}")?;
+        }
+        Ok(())
+    }
+}
+
+impl Continuation {
+    /// Runs to termination, calling `observer` at every point, and returns
+    /// every point with the reason the run ended.
+    ///
+    /// # Errors
+    /// As [`Continuation::trace`]; failures after the start end the run with
+    /// a [`Termination`] instead.
+    pub fn run<P: Problem + ?Sized, O: Observer>(
+        &self,
+        problem: &P,
+        start: &Solution,
+        observer: O,
+    ) -> Result<Branch> {
+        let trace = self.trace(problem, start)?;
+        Ok(drive(trace, observer))
+    }
+}
+
+pub(super) fn drive<P: Problem + ?Sized, O: Observer>(
+    mut trace: Trace<'_, P>,
+    mut observer: O,
+) -> Branch {
+    let mut points = Vec::new();
+    let mut stopped = false;
+    while let Some(p) = trace.next() {
+        for ds in trace.rejections.drain(..) {
+            if observer.step_rejected(ds).is_break() {
+                stopped = true;
+            }
+        }
+        let flow = observer.point(&p);
+        points.push(p);
+        if stopped || flow.is_break() {
+            stopped = true;
+            break;
+        }
+    }
+    if !stopped {
+        for ds in trace.rejections.drain(..) {
+            if observer.step_rejected(ds).is_break() {
+                break;
+            }
+        }
+    }
+    let termination = if stopped {
+        Termination::Stopped
+    } else {
+        trace
+            .termination
+            .take()
+            .unwrap_or(Termination::MaxSteps(trace.steps))
+    };
+    Branch {
+        points,
+        termination,
+    }
+}

@@ -1,0 +1,332 @@
+//! The step-by-step iterator [`Trace`] and one continuation step.
+
+use std::collections::VecDeque;
+use std::fmt;
+
+use super::{Continuation, Direction, Point, PointKind, Termination};
+use crate::bvp::system::{State, System};
+use crate::bvp::{NewtonOptions, Problem, Solution, finish};
+use crate::error::{Error, Result};
+use crate::linalg::Det;
+
+/// The step-by-step continuation iterator (see [`Continuation::trace`]).
+/// After it returns `None`, [`Trace::termination`] says why.
+pub struct Trace<'a, P: Problem + ?Sized> {
+    pub(super) cont: &'a Continuation,
+    pub(super) sys: System<'a, P>,
+    pub(super) mesh: crate::bvp::Mesh,
+    pub(super) opts: NewtonOptions,
+    pub(super) weights: Vec<f64>,
+    pub(super) x0: State,
+    pub(super) t0: State,
+    pub(super) det0: Det,
+    pub(super) ds: f64,
+    pub(super) arclength: f64,
+    pub(super) steps: usize,
+    pub(super) factored_at_x0: bool,
+    pub(super) skip_detection: bool,
+    pub(super) pending: VecDeque<Point>,
+    pub(super) termination: Option<Termination>,
+    pub(super) rejections: Vec<f64>,
+    pub(super) rejected: usize,
+    pub(super) newton_iterations: u64,
+    pub(super) ycol_a: Vec<f64>,
+    pub(super) ycol_b: Vec<f64>,
+}
+
+impl Continuation {
+    /// A step-by-step iterator over the branch through `start` (a solution
+    /// of the problem at its parameter values). The first item is the start
+    /// point.
+    ///
+    /// # Errors
+    /// Bad settings ([`Error::InvalidArgument`], [`Error::InvalidCount`],
+    /// [`Error::LengthMismatch`]), [`Error::IllPosed`] if the counts do not
+    /// match with λ free, or an error of the first tangent computation.
+    pub fn trace<'a, P: Problem + ?Sized>(
+        &'a self,
+        problem: &'a P,
+        start: &Solution,
+    ) -> Result<Trace<'a, P>> {
+        Trace::new(self, problem, start, None)
+    }
+}
+
+impl<P: Problem + ?Sized> fmt::Debug for Trace<'_, P> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Trace")
+            .field("steps", &self.steps)
+            .field("ds", &self.ds)
+            .field("arclength", &self.arclength)
+            .field("termination", &self.termination)
+            .finish_non_exhaustive()
+    }
+}
+
+impl<'a, P: Problem + ?Sized> Trace<'a, P> {
+    pub(super) fn new(
+        cont: &'a Continuation,
+        problem: &'a P,
+        start: &Solution,
+        switch: Option<(State, Direction, f64)>,
+    ) -> Result<Self> {
+        let n = problem.dim();
+        let np = problem.parameter_count();
+        cont.validate(n, np)?;
+        let tab = cont.solver.validate()?;
+        if start.dim() != n || start.parameters().len() != np {
+            return Err(Error::LengthMismatch {
+                name: "start solution dimension",
+                found: start.dim() as u64,
+                expected: n as u64,
+            });
+        }
+        if start.points_per_interval() != tab.m {
+            return Err(Error::InvalidCount {
+                name: "start solution points per interval",
+                value: start.points_per_interval() as u64,
+                allowed: "the solver's m (solve the start with the same Collocation)",
+            });
+        }
+        let mut free: Vec<usize> = cont.solver.free().to_vec();
+        if free.contains(&cont.parameter) {
+            return Err(Error::InvalidCount {
+                name: "continuation parameter",
+                value: cont.parameter as u64,
+                allowed: "a parameter that is not already one of the solver's free parameters",
+            });
+        }
+        free.push(cont.parameter);
+        let mesh = start.mesh().clone();
+        let mut sys = System::new(problem, mesh.points().to_vec(), tab, free, 1)?;
+        sys.linear = cont.solver.linear();
+        let weights = cont.weights.clone().unwrap_or_else(|| vec![1.0; n]);
+        let x0 = State {
+            y: start.y.clone(),
+            k: start.k.clone(),
+            p: start.p.clone(),
+        };
+        let len = sys.y_ref.len();
+        let mut trace = Trace {
+            cont,
+            sys,
+            mesh,
+            opts: NewtonOptions {
+                tol: cont.solver.newton_options().tol,
+                max_iter: cont.max_newton,
+            },
+            weights,
+            x0,
+            t0: State {
+                y: Vec::new(),
+                k: Vec::new(),
+                p: Vec::new(),
+            },
+            det0: Det::ONE,
+            ds: cont.ds.abs().clamp(cont.ds_min, cont.ds_max),
+            arclength: 0.0,
+            steps: 0,
+            factored_at_x0: false,
+            skip_detection: false,
+            pending: VecDeque::new(),
+            termination: None,
+            rejections: Vec::new(),
+            rejected: 0,
+            newton_iterations: 0,
+            ycol_a: vec![0.0; len],
+            ycol_b: vec![0.0; len],
+        };
+        let mut y_ref = std::mem::take(&mut trace.sys.y_ref);
+        trace.sys.collocation_values(&trace.x0, &mut y_ref);
+        trace.sys.y_ref = y_ref;
+        match switch {
+            None => {
+                // Tangent from [F_x; e_λᵀ] τ = e, oriented by the sign of ds.
+                trace.set_parameter_border();
+                let x0 = trace.x0.clone();
+                trace.sys.factor(&x0)?;
+                let mut t = trace.solve_border_rhs()?;
+                let nrm = trace.norm(&t);
+                let sgn = if cont.ds < 0.0 { -1.0 } else { 1.0 };
+                t.scale(sgn / nrm);
+                trace.t0 = t;
+                trace.set_tangent_border(0.0);
+                trace.det0 = trace.sys.phase_c()?;
+                trace.factored_at_x0 = true;
+            }
+            Some((tangent, direction, arclength)) => {
+                trace.start_on_bifurcating_branch(tangent, direction, arclength)?;
+            }
+        }
+        let sol = trace.solution(&trace.x0.clone(), Default::default())?;
+        let first = trace.point(
+            sol,
+            &trace.x0.clone(),
+            &trace.t0.clone(),
+            trace.det0,
+            PointKind::Start,
+            0,
+        );
+        trace.pending.push_back(first);
+        Ok(trace)
+    }
+
+    /// Why the run ended, once the iterator is exhausted.
+    #[must_use]
+    pub fn termination(&self) -> Option<&Termination> {
+        self.termination.as_ref()
+    }
+
+    /// The current step size |Δs|.
+    #[must_use]
+    pub fn step_size(&self) -> f64 {
+        self.ds
+    }
+
+    /// Accepted steps so far.
+    #[must_use]
+    pub fn steps(&self) -> usize {
+        self.steps
+    }
+
+    /// Rejected (halved and retried) steps so far.
+    #[must_use]
+    pub fn rejected(&self) -> usize {
+        self.rejected
+    }
+
+    /// Corrector iterations so far: accepted, rejected and special-point
+    /// location correctors alike (failed correctors are not counted).
+    #[must_use]
+    pub fn newton_iterations(&self) -> u64 {
+        self.newton_iterations
+    }
+
+    pub(super) fn solution(
+        &mut self,
+        x: &State,
+        stats: crate::bvp::NewtonStats,
+    ) -> Result<Solution> {
+        finish(&mut self.sys, x.clone(), self.mesh.clone(), stats)
+    }
+
+    pub(super) fn point(
+        &self,
+        solution: Solution,
+        x: &State,
+        t: &State,
+        det: Det,
+        kind: PointKind,
+        iterations: u32,
+    ) -> Point {
+        let q = self.cont.parameter;
+        Point {
+            solution,
+            parameter: x.p[q],
+            arclength: self.arclength,
+            newton_iterations: iterations,
+            dparameter: t.p[q],
+            determinant_sign: det.sign,
+            kind,
+            tangent: (kind == PointKind::BranchPoint).then(|| t.clone()),
+        }
+    }
+
+    pub(super) fn fail(&mut self, e: Error) {
+        self.termination = Some(match e {
+            Error::NonFinite { .. } => Termination::NonFinite(e),
+            Error::SingularJacobian { .. } => Termination::Singular(e),
+            _ => Termination::NewtonFailed {
+                ds: self.ds,
+                reason: e,
+            },
+        });
+    }
+
+    /// One accepted step (plus any located special points) into `pending`.
+    fn advance(&mut self) {
+        if self.steps >= self.cont.max_steps {
+            self.termination = Some(Termination::MaxSteps(self.steps));
+            return;
+        }
+        let Some(c) = self.accepted_step() else {
+            return;
+        };
+        self.steps += 1;
+        let q = self.cont.parameter;
+        let ds = self.ds;
+        let (found, err) = self.special_points_in_step(&c, ds);
+        // Whatever factorisation is current (at the new point, a located
+        // point or an earlier chord point) preconditions the next corrector;
+        // Newton refreshes it when the contraction degrades.
+        self.factored_at_x0 = true;
+        let base = self.arclength;
+        for (cs, s, kind, stop) in found {
+            self.arclength = base + s;
+            let sol = match self.solution(&cs.x, Default::default()) {
+                Ok(s) => s,
+                Err(e) => {
+                    self.fail(e);
+                    return;
+                }
+            };
+            let p = self.point(sol, &cs.x, &cs.tangent, cs.det, kind, cs.iterations);
+            self.pending.push_back(p);
+            if stop {
+                self.termination = Some(match kind {
+                    PointKind::Event(i) => Termination::Event(i),
+                    _ => Termination::ParameterValue(cs.x.p[q]),
+                });
+                return;
+            }
+        }
+        if let Some(e) = err {
+            self.fail(e);
+            return;
+        }
+        self.arclength = base + ds;
+        let sol = match self.solution(&c.x, Default::default()) {
+            Ok(s) => s,
+            Err(e) => {
+                self.fail(e);
+                return;
+            }
+        };
+        let p = self.point(
+            sol,
+            &c.x,
+            &c.tangent,
+            c.det,
+            PointKind::Regular,
+            c.iterations,
+        );
+        self.pending.push_back(p);
+        // Accept: the new point becomes x₀; its factorisation is current
+        // unless location overwrote it.
+        let its = c.iterations;
+        self.x0 = c.x;
+        self.t0 = c.tangent;
+        self.det0 = c.det;
+        self.skip_detection = false;
+        let mut y_ref = std::mem::take(&mut self.sys.y_ref);
+        self.sys.collocation_values(&self.x0, &mut y_ref);
+        self.sys.y_ref = y_ref;
+        self.adapt_step(its);
+    }
+}
+
+impl<P: Problem + ?Sized> Iterator for Trace<'_, P> {
+    type Item = Point;
+
+    fn next(&mut self) -> Option<Point> {
+        loop {
+            if let Some(p) = self.pending.pop_front() {
+                return Some(p);
+            }
+            if self.termination.is_some() {
+                return None;
+            }
+            self.advance();
+        }
+    }
+}
