@@ -1,7 +1,7 @@
 //! The corrector: chord Newton on the bordered system, the new tangent and
 //! the determinant sign.
 
-use super::Trace;
+use super::Steps;
 use crate::bvp::system::State;
 use crate::bvp::{Problem, newton, scaled_norm};
 use crate::error::Result;
@@ -15,7 +15,7 @@ pub(super) struct Corrected {
     pub(super) iterations: u32,
 }
 
-impl<P: Problem + ?Sized> Trace<'_, P> {
+impl<P: Problem + ?Sized> Steps<'_, P> {
     /// Border row e_λᵀ (target irrelevant: only used for the first tangent).
     pub(super) fn set_parameter_border(&mut self) {
         let b = &mut self.sys.border;

@@ -2,7 +2,7 @@
 //! inside an accepted step, by the Illinois iteration on its arclength.
 
 use super::corrector::Corrected;
-use super::{PointKind, Trace};
+use super::{PointKind, Steps};
 use crate::bvp::Problem;
 use crate::bvp::system::State;
 use crate::error::{Error, Result};
@@ -16,7 +16,7 @@ pub(super) enum Watch {
     Event(usize),
 }
 
-impl<P: Problem + ?Sized> Trace<'_, P> {
+impl<P: Problem + ?Sized> Steps<'_, P> {
     pub(super) fn watch_value(&self, w: Watch, c: &Corrected, log_ref: f64) -> f64 {
         let q = self.cont.parameter;
         match w {
@@ -89,7 +89,7 @@ impl<P: Problem + ?Sized> Trace<'_, P> {
 /// step, its kind, and whether it ends the run.
 pub(super) type Located = (Corrected, f64, PointKind, bool);
 
-impl<P: Problem + ?Sized> Trace<'_, P> {
+impl<P: Problem + ?Sized> Steps<'_, P> {
     /// The special points inside the accepted step x₀ → `c` of arclength
     /// `ds`, located and sorted by arclength, with the last location error.
     pub(super) fn special_points_in_step(

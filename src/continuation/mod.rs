@@ -5,9 +5,9 @@
 //! | type | role |
 //! |---|---|
 //! | [`Continuation`] | the settings (builder; every default listed in [`Continuation::new`]) |
-//! | [`Trace`] | a step-by-step iterator over the points of one branch |
+//! | [`Steps`] | a step-by-step iterator over the points of one branch |
 //! | [`Observer`] | hooks called by [`Continuation::run`] (closures and `()` implement it) |
-//! | [`Branch`] | every point computed, in order, with the [`Termination`] reason |
+//! | [`Run`] | every point computed, in order, with the [`Termination`] reason |
 //! | [`Point`] | one solution on the branch, with arclength, tangent sign, determinant sign and its [`PointKind`] |
 //!
 //! ## The method
@@ -69,8 +69,8 @@ mod termination;
 
 pub use observer::Observer;
 pub use point::{Point, PointKind};
-pub use run::Branch;
+pub use run::Run;
 pub use settings::Continuation;
-pub use steps::Trace;
-pub use switch::Direction;
+pub use steps::Steps;
+pub use switch::BranchSide;
 pub use termination::Termination;

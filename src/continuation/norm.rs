@@ -1,6 +1,6 @@
 //! The integral inner product of the continuation (module docs).
 
-use super::{Continuation, Trace};
+use super::{Continuation, Steps};
 use crate::bvp::system::State;
 use crate::bvp::{Problem, Solution};
 use crate::error::{Error, Result};
@@ -15,7 +15,7 @@ impl Continuation {
     /// # Errors
     /// [`Error::LengthMismatch`] or [`Error::InvalidCount`] unless both
     /// solutions have the dimension of the weights, the solver's points per
-    /// interval, and the same mesh; bad settings as [`Continuation::trace`].
+    /// interval, and the same mesh; bad settings as [`Continuation::steps`].
     pub fn distance(&self, a: &Solution, b: &Solution) -> Result<f64> {
         let n = a.dim();
         self.validate(n, a.parameters().len())?;
@@ -55,7 +55,7 @@ impl Continuation {
     }
 }
 
-impl<P: Problem + ?Sized> Trace<'_, P> {
+impl<P: Problem + ?Sized> Steps<'_, P> {
     pub(super) fn inner(&mut self, a: &State, b: &State) -> f64 {
         let (n, m) = (self.sys.n, self.sys.m);
         self.sys.collocation_values(a, &mut self.ycol_a);

@@ -2,18 +2,18 @@
 
 use std::fmt;
 
-use super::{Continuation, Observer, Point, PointKind, Termination, Trace};
+use super::{Continuation, Observer, Point, PointKind, Steps, Termination};
 use crate::bvp::{Problem, Solution};
 use crate::error::Result;
 
 /// The result of a run: every point in order and why it ended.
 #[derive(Debug, Clone)]
-pub struct Branch {
+pub struct Run {
     pub(super) points: Vec<Point>,
     pub(super) termination: Termination,
 }
 
-impl Branch {
+impl Run {
     /// Every point, in order.
     #[must_use]
     pub fn points(&self) -> &[Point] {
@@ -50,7 +50,7 @@ impl Branch {
     }
 }
 
-impl fmt::Display for Branch {
+impl fmt::Display for Run {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         writeln!(
             f,
@@ -70,27 +70,27 @@ impl Continuation {
     /// every point with the reason the run ended.
     ///
     /// # Errors
-    /// As [`Continuation::trace`]; failures after the start end the run with
+    /// As [`Continuation::steps`]; failures after the start end the run with
     /// a [`Termination`] instead.
     pub fn run<P: Problem + ?Sized, O: Observer>(
         &self,
         problem: &P,
         start: &Solution,
         observer: O,
-    ) -> Result<Branch> {
-        let trace = self.trace(problem, start)?;
-        Ok(drive(trace, observer))
+    ) -> Result<Run> {
+        let steps = self.steps(problem, start)?;
+        Ok(drive(steps, observer))
     }
 }
 
 pub(super) fn drive<P: Problem + ?Sized, O: Observer>(
-    mut trace: Trace<'_, P>,
+    mut steps: Steps<'_, P>,
     mut observer: O,
-) -> Branch {
+) -> Run {
     let mut points = Vec::new();
     let mut stopped = false;
-    while let Some(p) = trace.next() {
-        for ds in trace.rejections.drain(..) {
+    while let Some(p) = steps.next() {
+        for ds in steps.rejections.drain(..) {
             if observer.step_rejected(ds).is_break() {
                 stopped = true;
             }
@@ -103,7 +103,7 @@ pub(super) fn drive<P: Problem + ?Sized, O: Observer>(
         }
     }
     if !stopped {
-        for ds in trace.rejections.drain(..) {
+        for ds in steps.rejections.drain(..) {
             if observer.step_rejected(ds).is_break() {
                 break;
             }
@@ -112,12 +112,12 @@ pub(super) fn drive<P: Problem + ?Sized, O: Observer>(
     let termination = if stopped {
         Termination::Stopped
     } else {
-        trace
+        steps
             .termination
             .take()
-            .unwrap_or(Termination::MaxSteps(trace.steps))
+            .unwrap_or(Termination::MaxSteps(steps.accepted))
     };
-    Branch {
+    Run {
         points,
         termination,
     }

@@ -1,12 +1,12 @@
 //! Step control: halving on rejection, growth by corrector iterations
 //! (module docs: AUTO-07p's rule with shifted thresholds).
 
+use super::Steps;
 use super::Termination;
-use super::Trace;
 use super::corrector::Corrected;
 use crate::bvp::Problem;
 
-impl<P: Problem + ?Sized> Trace<'_, P> {
+impl<P: Problem + ?Sized> Steps<'_, P> {
     /// Corrects at the current Δs, halving it and retrying while the
     /// corrector fails or the tangent turns by more than the maximum angle;
     /// `None` (with the termination set) when that happens at Δs_min.

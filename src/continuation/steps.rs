@@ -1,17 +1,17 @@
-//! The step-by-step iterator [`Trace`] and one continuation step.
+//! The step-by-step iterator [`Steps`] and one continuation step.
 
 use std::collections::VecDeque;
 use std::fmt;
 
-use super::{Continuation, Direction, Point, PointKind, Termination};
+use super::{BranchSide, Continuation, Point, PointKind, Termination};
 use crate::bvp::system::{State, System};
 use crate::bvp::{NewtonOptions, Problem, Solution, finish};
 use crate::error::{Error, Result};
 use crate::linalg::Det;
 
-/// The step-by-step continuation iterator (see [`Continuation::trace`]).
-/// After it returns `None`, [`Trace::termination`] says why.
-pub struct Trace<'a, P: Problem + ?Sized> {
+/// The step-by-step continuation iterator (see [`Continuation::steps`]).
+/// After it returns `None`, [`Steps::termination`] says why.
+pub struct Steps<'a, P: Problem + ?Sized> {
     pub(super) cont: &'a Continuation,
     pub(super) sys: System<'a, P>,
     pub(super) mesh: crate::bvp::Mesh,
@@ -22,7 +22,7 @@ pub struct Trace<'a, P: Problem + ?Sized> {
     pub(super) det0: Det,
     pub(super) ds: f64,
     pub(super) arclength: f64,
-    pub(super) steps: usize,
+    pub(super) accepted: usize,
     pub(super) factored_at_x0: bool,
     pub(super) skip_detection: bool,
     pub(super) pending: VecDeque<Point>,
@@ -43,19 +43,19 @@ impl Continuation {
     /// Bad settings ([`Error::InvalidArgument`], [`Error::InvalidCount`],
     /// [`Error::LengthMismatch`]), [`Error::IllPosed`] if the counts do not
     /// match with λ free, or an error of the first tangent computation.
-    pub fn trace<'a, P: Problem + ?Sized>(
+    pub fn steps<'a, P: Problem + ?Sized>(
         &'a self,
         problem: &'a P,
         start: &Solution,
-    ) -> Result<Trace<'a, P>> {
-        Trace::new(self, problem, start, None)
+    ) -> Result<Steps<'a, P>> {
+        Steps::new(self, problem, start, None)
     }
 }
 
-impl<P: Problem + ?Sized> fmt::Debug for Trace<'_, P> {
+impl<P: Problem + ?Sized> fmt::Debug for Steps<'_, P> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.debug_struct("Trace")
-            .field("steps", &self.steps)
+        f.debug_struct("Steps")
+            .field("steps", &self.accepted)
             .field("ds", &self.ds)
             .field("arclength", &self.arclength)
             .field("termination", &self.termination)
@@ -63,12 +63,12 @@ impl<P: Problem + ?Sized> fmt::Debug for Trace<'_, P> {
     }
 }
 
-impl<'a, P: Problem + ?Sized> Trace<'a, P> {
+impl<'a, P: Problem + ?Sized> Steps<'a, P> {
     pub(super) fn new(
         cont: &'a Continuation,
         problem: &'a P,
         start: &Solution,
-        switch: Option<(State, Direction, f64)>,
+        switch: Option<(State, BranchSide, f64)>,
     ) -> Result<Self> {
         let n = problem.dim();
         let np = problem.parameter_count();
@@ -107,7 +107,7 @@ impl<'a, P: Problem + ?Sized> Trace<'a, P> {
             p: start.p.clone(),
         };
         let len = sys.y_ref.len();
-        let mut trace = Trace {
+        let mut steps = Steps {
             cont,
             sys,
             mesh,
@@ -125,7 +125,7 @@ impl<'a, P: Problem + ?Sized> Trace<'a, P> {
             det0: Det::ONE,
             ds: cont.ds.abs().clamp(cont.ds_min, cont.ds_max),
             arclength: 0.0,
-            steps: 0,
+            accepted: 0,
             factored_at_x0: false,
             skip_detection: false,
             pending: VecDeque::new(),
@@ -136,39 +136,39 @@ impl<'a, P: Problem + ?Sized> Trace<'a, P> {
             ycol_a: vec![0.0; len],
             ycol_b: vec![0.0; len],
         };
-        let mut y_ref = std::mem::take(&mut trace.sys.y_ref);
-        trace.sys.collocation_values(&trace.x0, &mut y_ref);
-        trace.sys.y_ref = y_ref;
+        let mut y_ref = std::mem::take(&mut steps.sys.y_ref);
+        steps.sys.collocation_values(&steps.x0, &mut y_ref);
+        steps.sys.y_ref = y_ref;
         match switch {
             None => {
                 // Tangent from [F_x; e_λᵀ] τ = e, oriented by the sign of ds.
-                trace.set_parameter_border();
-                let x0 = trace.x0.clone();
-                trace.sys.factor(&x0)?;
-                let mut t = trace.solve_border_rhs()?;
-                let nrm = trace.norm(&t);
+                steps.set_parameter_border();
+                let x0 = steps.x0.clone();
+                steps.sys.factor(&x0)?;
+                let mut t = steps.solve_border_rhs()?;
+                let nrm = steps.norm(&t);
                 let sgn = if cont.ds < 0.0 { -1.0 } else { 1.0 };
                 t.scale(sgn / nrm);
-                trace.t0 = t;
-                trace.set_tangent_border(0.0);
-                trace.det0 = trace.sys.phase_c()?;
-                trace.factored_at_x0 = true;
+                steps.t0 = t;
+                steps.set_tangent_border(0.0);
+                steps.det0 = steps.sys.phase_c()?;
+                steps.factored_at_x0 = true;
             }
             Some((tangent, direction, arclength)) => {
-                trace.start_on_bifurcating_branch(tangent, direction, arclength)?;
+                steps.start_on_bifurcating_branch(tangent, direction, arclength)?;
             }
         }
-        let sol = trace.solution(&trace.x0.clone(), Default::default())?;
-        let first = trace.point(
+        let sol = steps.solution(&steps.x0.clone(), Default::default())?;
+        let first = steps.point(
             sol,
-            &trace.x0.clone(),
-            &trace.t0.clone(),
-            trace.det0,
+            &steps.x0.clone(),
+            &steps.t0.clone(),
+            steps.det0,
             PointKind::Start,
             0,
         );
-        trace.pending.push_back(first);
-        Ok(trace)
+        steps.pending.push_back(first);
+        Ok(steps)
     }
 
     /// Why the run ended, once the iterator is exhausted.
@@ -185,8 +185,8 @@ impl<'a, P: Problem + ?Sized> Trace<'a, P> {
 
     /// Accepted steps so far.
     #[must_use]
-    pub fn steps(&self) -> usize {
-        self.steps
+    pub fn accepted(&self) -> usize {
+        self.accepted
     }
 
     /// Rejected (halved and retried) steps so far.
@@ -245,14 +245,14 @@ impl<'a, P: Problem + ?Sized> Trace<'a, P> {
 
     /// One accepted step (plus any located special points) into `pending`.
     fn advance(&mut self) {
-        if self.steps >= self.cont.max_steps {
-            self.termination = Some(Termination::MaxSteps(self.steps));
+        if self.accepted >= self.cont.max_steps {
+            self.termination = Some(Termination::MaxSteps(self.accepted));
             return;
         }
         let Some(c) = self.accepted_step() else {
             return;
         };
-        self.steps += 1;
+        self.accepted += 1;
         let q = self.cont.parameter;
         let ds = self.ds;
         let (found, err) = self.special_points_in_step(&c, ds);
@@ -315,7 +315,7 @@ impl<'a, P: Problem + ?Sized> Trace<'a, P> {
     }
 }
 
-impl<P: Problem + ?Sized> Iterator for Trace<'_, P> {
+impl<P: Problem + ?Sized> Iterator for Steps<'_, P> {
     type Item = Point;
 
     fn next(&mut self) -> Option<Point> {

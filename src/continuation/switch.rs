@@ -1,14 +1,14 @@
 //! Branch switching at a located branch point.
 
 use super::run::drive;
-use super::{Branch, Continuation, Observer, Point, PointKind, Trace};
+use super::{Continuation, Observer, Point, PointKind, Run, Steps};
 use crate::bvp::Problem;
 use crate::bvp::system::State;
 use crate::error::{Error, Result};
 
-/// Direction of a bifurcating branch relative to the second null vector.
+/// BranchSide of a bifurcating branch relative to the second null vector.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Direction {
+pub enum BranchSide {
     /// Along +φ.
     Positive,
     /// Along −φ.
@@ -21,16 +21,16 @@ impl Continuation {
     ///
     /// # Errors
     /// [`Error::NotABranchPoint`] unless `bp` is a located branch point of a
-    /// run with the same problem; otherwise as [`Continuation::trace`].
+    /// run with the same problem; otherwise as [`Continuation::steps`].
     pub fn run_from_branch_point<P: Problem + ?Sized, O: Observer>(
         &self,
         problem: &P,
         bp: &Point,
-        direction: Direction,
+        direction: BranchSide,
         observer: O,
-    ) -> Result<Branch> {
-        let trace = self.switch_branch(problem, bp, direction)?;
-        Ok(drive(trace, observer))
+    ) -> Result<Run> {
+        let steps = self.switch_branch(problem, bp, direction)?;
+        Ok(drive(steps, observer))
     }
 
     /// The iterator form of [`Continuation::run_from_branch_point`].
@@ -41,8 +41,8 @@ impl Continuation {
         &'a self,
         problem: &'a P,
         bp: &Point,
-        direction: Direction,
-    ) -> Result<Trace<'a, P>> {
+        direction: BranchSide,
+    ) -> Result<Steps<'a, P>> {
         let Some(tangent) = bp
             .tangent
             .as_ref()
@@ -53,7 +53,7 @@ impl Continuation {
                 kind: bp.kind.name(),
             });
         };
-        Trace::new(
+        Steps::new(
             self,
             problem,
             &bp.solution,
@@ -62,14 +62,14 @@ impl Continuation {
     }
 }
 
-impl<P: Problem + ?Sized> Trace<'_, P> {
+impl<P: Problem + ?Sized> Steps<'_, P> {
     /// Starts at a located branch point along ±φ, φ the second null vector
     /// of [F_x; τᵀ] (one solve with the nearly singular factorisation,
     /// orthogonalised against τ).
     pub(super) fn start_on_bifurcating_branch(
         &mut self,
         tangent: State,
-        direction: Direction,
+        direction: BranchSide,
         arclength: f64,
     ) -> Result<()> {
         self.arclength = arclength;
@@ -112,7 +112,7 @@ impl<P: Problem + ?Sized> Trace<'_, P> {
         let t0 = self.t0.clone();
         phi.axpy(-a, &t0, &self.sys.free.clone());
         let nrm = self.norm(&phi);
-        let sgn = if direction == Direction::Positive {
+        let sgn = if direction == BranchSide::Positive {
             1.0
         } else {
             -1.0

@@ -30,7 +30,7 @@ use std::time::{Duration, Instant};
 
 use super::{Control, Equilibrium, Rod};
 use crate::bvp::{Collocation, Mesh};
-use crate::continuation::{Continuation, PointKind, Termination, Trace};
+use crate::continuation::{Continuation, PointKind, Steps, Termination};
 use crate::curve::{self, Fold, FoldKind, ForceExtension, ForcePoint};
 use crate::error::{Error, Result};
 
@@ -496,9 +496,9 @@ impl Pull {
         if observer.point(&eq, &pt).is_break() {
             return Ok(PullTermination::Stopped);
         }
-        let mut trace = cont.trace(&rod, &s1)?;
+        let mut trace = cont.steps(&rod, &s1)?;
         let outcome = self.follow(&mut trace, offset, run, observer);
-        run.steps = trace.steps();
+        run.steps = trace.accepted();
         run.rejected = trace.rejected();
         run.newton_iterations += trace.newton_iterations();
         if let Some(t) = outcome? {
@@ -535,7 +535,7 @@ impl Pull {
     /// the observer; `Some` when the observer stopped the run.
     fn follow<O: PullObserver>(
         &self,
-        trace: &mut Trace<'_, Rod>,
+        trace: &mut Steps<'_, Rod>,
         offset: f64,
         run: &mut PullRun,
         observer: &mut O,
