@@ -169,5 +169,16 @@ pub enum Error {
         /// The point's kind, in words.
         kind: &'static str,
     },
+    /// The tangent turned by more than the maximum angle between two
+    /// continuation steps, even at the minimum step size.
+    #[error(
+        "the tangent turned by {angle:.3e} rad in one step (the limit is {max_angle:.3e} rad) even at the minimum step"
+    )]
+    StepAngleTooLarge {
+        /// The angle between successive tangents, radians.
+        angle: f64,
+        /// The limit ([`crate::continuation::Continuation::max_angle`]).
+        max_angle: f64,
+    },
     // ----- rod, spring ---------------------------------------------------
 }

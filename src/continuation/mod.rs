@@ -4,11 +4,19 @@
 //!
 //! | type | role |
 //! |---|---|
-//! | [`Continuation`] | the settings (builder; every default listed in [`Continuation::new`]) |
-//! | [`Steps`] | a step-by-step iterator over the points of one branch |
-//! | [`Observer`] | hooks called by [`Continuation::run`] (closures and `()` implement it) |
-//! | [`Run`] | every point computed, in order, with the [`Termination`] reason |
-//! | [`Point`] | one solution on the branch, with arclength, tangent sign, determinant sign and its [`PointKind`] |
+//! | [`Continuation`] | the settings (builder; every default listed in [`Continuation::new`], all checked before any work) |
+//! | [`Continuation::run`] → [`Run`] | every point computed, in order, with the [`Termination`] |
+//! | [`Continuation::steps`] → [`Steps`] | the same run as a step-by-step iterator (drive the loop yourself) |
+//! | [`Observer`] | hooks of a run: `start`, `point`, `fold`, `branch_point`, `step_rejected`, `finish` (closures and `()` implement it; [`Every`] thins it) |
+//! | [`Termination`] | why a run ended: step limit, stop value or event reached, stopped by the observer, or failed with a typed [`Error`](crate::Error) |
+//! | [`Point`] | one solution on the branch, with arclength, dλ/ds, determinant sign and its [`PointKind`] |
+//! | [`BranchSide`] | which side of a branch point [`Continuation::run_from_branch_point`] starts on |
+//!
+//! The files: `settings` (the builder and its validation), `run` and
+//! `steps` (the two ways to drive a run), `observer`, `termination`,
+//! `point`, `norm` (the integral inner product), `corrector` (predictor,
+//! chord Newton, tangent), `step_control`, `locate` (special points),
+//! `switch` (branch switching).
 //!
 //! ## The method
 //!
@@ -67,7 +75,7 @@ mod steps;
 mod switch;
 mod termination;
 
-pub use observer::Observer;
+pub use observer::{Every, Observer};
 pub use point::{Point, PointKind};
 pub use run::Run;
 pub use settings::Continuation;

@@ -1,6 +1,7 @@
 //! [`Continuation::run`]: a whole branch with its termination.
 
 use std::fmt;
+use std::ops::ControlFlow;
 
 use super::{Continuation, Observer, Point, PointKind, Steps, Termination};
 use crate::bvp::{Problem, Solution};
@@ -83,6 +84,8 @@ impl Continuation {
     }
 }
 
+/// Drives `steps` to its end, calling the observer's hooks in the order
+/// documented on [`Observer`].
 pub(super) fn drive<P: Problem + ?Sized, O: Observer>(
     mut steps: Steps<'_, P>,
     mut observer: O,
@@ -95,9 +98,25 @@ pub(super) fn drive<P: Problem + ?Sized, O: Observer>(
                 stopped = true;
             }
         }
-        let flow = observer.point(&p);
+        let mut flow = if stopped {
+            ControlFlow::Break(())
+        } else if points.is_empty() {
+            observer.start(steps.cont, &p)
+        } else {
+            ControlFlow::Continue(())
+        };
+        if flow.is_continue() {
+            flow = observer.point(&p);
+        }
+        if flow.is_continue() {
+            flow = match p.kind() {
+                PointKind::Fold => observer.fold(&p),
+                PointKind::BranchPoint => observer.branch_point(&p),
+                _ => ControlFlow::Continue(()),
+            };
+        }
         points.push(p);
-        if stopped || flow.is_break() {
+        if flow.is_break() {
             stopped = true;
             break;
         }
@@ -117,6 +136,7 @@ pub(super) fn drive<P: Problem + ?Sized, O: Observer>(
             .take()
             .unwrap_or(Termination::MaxSteps(steps.accepted))
     };
+    observer.finish(&termination);
     Run {
         points,
         termination,

@@ -2,9 +2,9 @@
 //! (module docs: AUTO-07p's rule with shifted thresholds).
 
 use super::Steps;
-use super::Termination;
 use super::corrector::Corrected;
 use crate::bvp::Problem;
+use crate::error::Error;
 
 impl<P: Problem + ?Sized> Steps<'_, P> {
     /// Corrects at the current Δs, halving it and retrying while the
@@ -22,7 +22,10 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
                         return Some(c);
                     }
                     if self.ds <= self.cont.ds_min {
-                        self.termination = Some(Termination::AngleTooLarge { ds: self.ds, angle });
+                        self.fail(Error::StepAngleTooLarge {
+                            angle,
+                            max_angle: self.cont.max_angle,
+                        });
                         return None;
                     }
                 }

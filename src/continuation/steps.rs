@@ -232,15 +232,9 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         }
     }
 
-    pub(super) fn fail(&mut self, e: Error) {
-        self.termination = Some(match e {
-            Error::NonFinite { .. } => Termination::NonFinite(e),
-            Error::SingularJacobian { .. } => Termination::Singular(e),
-            _ => Termination::NewtonFailed {
-                ds: self.ds,
-                reason: e,
-            },
-        });
+    /// Ends the run: the step failed at |Δs| with `error`.
+    pub(super) fn fail(&mut self, error: Error) {
+        self.termination = Some(Termination::Failed { ds: self.ds, error });
     }
 
     /// One accepted step (plus any located special points) into `pending`.

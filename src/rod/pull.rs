@@ -508,15 +508,8 @@ impl Pull {
             Some(Termination::ParameterValue(_)) | None => PullTermination::ReachedForce,
             Some(Termination::MaxSteps(n)) => PullTermination::MaxSteps(*n),
             Some(Termination::Stopped) => PullTermination::Stopped,
-            Some(Termination::NewtonFailed { reason: e, .. })
-            | Some(Termination::Singular(e))
-            | Some(Termination::NonFinite(e)) => PullTermination::StepTooSmall { error: e.clone() },
-            Some(Termination::AngleTooLarge { angle, .. }) => PullTermination::StepTooSmall {
-                error: Error::InvalidArgument {
-                    name: "step angle",
-                    value: *angle,
-                    allowed: "tangents turning by less than the maximum angle",
-                },
+            Some(Termination::Failed { error, .. }) => PullTermination::StepTooSmall {
+                error: error.clone(),
             },
             Some(other) => PullTermination::StepTooSmall {
                 error: Error::InvalidArgument {
