@@ -86,21 +86,30 @@ impl fmt::Display for Continuation {
 
 impl Continuation {
     /// Continuation in the parameter with index `parameter` (into p), with
-    /// the defaults:
+    /// the defaults below and the domain each setting must lie in.
     ///
-    /// | setting | default |
-    /// |---|---|
-    /// | [`solver`](Self::solver) | [`Collocation::new()`] (its free parameters stay free; its mesh is the start solution's) |
-    /// | [`step`](Self::step) Δs | 0.01 (its sign picks the initial direction of λ) |
-    /// | [`step_bounds`](Self::step_bounds) | Δs_min = 1e-8, Δs_max = 0.5 |
-    /// | [`max_steps`](Self::max_steps) | 200 |
-    /// | [`max_newton`](Self::max_newton) | 10 corrector iterations |
-    /// | [`weights`](Self::weights) | 1 for every variable |
-    /// | [`parameter_weight`](Self::parameter_weight) θ | 1 |
-    /// | [`max_angle`](Self::max_angle) | 0.35 rad between successive tangents |
-    /// | [`detect_folds`](Self::detect_folds), [`detect_branch_points`](Self::detect_branch_points) | on |
-    /// | [`locate_tolerance`](Self::locate_tolerance) | 1e-10 in arclength |
-    /// | stops and events | none |
+    /// | setting | default | allowed (else the error names it) |
+    /// |---|---|---|
+    /// | `parameter` | (given) | below the problem's `parameter_count()`, not one of the solver's free parameters ([`Error::InvalidCount`]) |
+    /// | [`solver`](Self::solver) | [`Collocation::new()`] (its free parameters stay free; its mesh is the start solution's) | as [`Collocation`]; `m` equal to the start solution's |
+    /// | [`step`](Self::step) Δs | 0.01 (its sign picks the initial direction of λ) | finite, ≠ 0; \|Δs\| is clamped into [Δs_min, Δs_max] |
+    /// | [`step_bounds`](Self::step_bounds) | Δs_min = 1e-8, Δs_max = 0.5 | 0 < Δs_min ≤ Δs_max < ∞ |
+    /// | [`max_steps`](Self::max_steps) | 200 | any (0: the start point only) |
+    /// | [`max_newton`](Self::max_newton) | 10 corrector iterations | ≥ 1 |
+    /// | [`weights`](Self::weights) | 1 for every variable | one per variable, finite, ≥ 0 ([`Error::LengthMismatch`] for the length) |
+    /// | [`parameter_weight`](Self::parameter_weight) θ | 1 | finite, > 0 |
+    /// | [`max_angle`](Self::max_angle) | 0.35 rad between successive tangents | 0 < angle ≤ π |
+    /// | [`detect_folds`](Self::detect_folds), [`detect_branch_points`](Self::detect_branch_points) | on | |
+    /// | [`locate_tolerance`](Self::locate_tolerance) | 1e-10 in arclength | finite, > 0 |
+    /// | [`stop_at`](Self::stop_at) values | none | finite |
+    /// | [`stop_when`](Self::stop_when) events | none | |
+    ///
+    /// The setters never fail. [`run`](Self::run), [`steps`](Self::steps),
+    /// [`run_from_branch_point`](Self::run_from_branch_point),
+    /// [`switch_branch`](Self::switch_branch) and
+    /// [`distance`](Self::distance) check every setting first and return
+    /// [`Error::InvalidArgument`] (or the error named above) with the value
+    /// given, before the problem is called once.
     #[must_use]
     pub fn new(parameter: usize) -> Self {
         Continuation {
@@ -232,11 +241,32 @@ impl Continuation {
                 allowed: "finite and non-zero",
             });
         }
-        if !(self.ds_min > 0.0 && self.ds_min <= self.ds_max && self.ds_max.is_finite()) {
+        if !(self.ds_min > 0.0 && self.ds_min.is_finite()) {
             return Err(Error::InvalidArgument {
                 name: "ds_min",
                 value: self.ds_min,
-                allowed: "0 < ds_min ≤ ds_max < ∞",
+                allowed: "finite and > 0",
+            });
+        }
+        if !(self.ds_max >= self.ds_min && self.ds_max.is_finite()) {
+            return Err(Error::InvalidArgument {
+                name: "ds_max",
+                value: self.ds_max,
+                allowed: "finite and ≥ ds_min",
+            });
+        }
+        if !(self.locate_tolerance > 0.0 && self.locate_tolerance.is_finite()) {
+            return Err(Error::InvalidArgument {
+                name: "locate_tolerance",
+                value: self.locate_tolerance,
+                allowed: "finite and > 0 (an arclength)",
+            });
+        }
+        if let Some(&bad) = self.stops.iter().find(|v| !v.is_finite()) {
+            return Err(Error::InvalidArgument {
+                name: "stop_at",
+                value: bad,
+                allowed: "a finite parameter value",
             });
         }
         if let Some(w) = &self.weights {

@@ -8,6 +8,7 @@ mod common;
 mod problems;
 
 mod observer;
+mod settings;
 
 use std::ops::ControlFlow;
 
