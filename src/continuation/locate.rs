@@ -3,8 +3,8 @@
 
 use super::corrector::Corrected;
 use super::{PointKind, Steps};
-use crate::bvp::Problem;
 use crate::bvp::system::State;
+use crate::bvp::{Problem, newton};
 use crate::error::{Error, Result};
 
 /// What the location iteration is tracking.
@@ -27,21 +27,17 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         }
     }
 
-    pub(super) fn event_value(&mut self, i: usize, x: &State) -> Result<f64> {
-        let sol = self.solution(x, Default::default())?;
-        Ok((self.cont.events[i])(&sol))
-    }
-
-    /// Illinois iteration for the zero of a watched function on [0, ds].
+    /// Illinois iteration for the zero of a watched function on the
+    /// arclength interval [a, b] of the current step, given its values at
+    /// the ends (of opposite signs, or one zero).
     pub(super) fn locate(
         &mut self,
         w: Watch,
-        f0: f64,
-        f1: f64,
-        ds: f64,
+        (a, fa): (f64, f64),
+        (b, fb): (f64, f64),
         log_ref: f64,
     ) -> Result<(Corrected, f64)> {
-        let (mut a, mut fa, mut b, mut fb) = (0.0, f0, ds, f1);
+        let (mut a, mut fa, mut b, mut fb) = (a, fa, b, fb);
         let mut best: Option<(Corrected, f64)> = None;
         let mut prev = f64::NAN;
         for _ in 0..60 {
@@ -89,17 +85,25 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
 /// step, its kind, and whether it ends the run.
 pub(super) type Located = (Corrected, f64, PointKind, bool);
 
+/// The special points of one step, located and sorted by arclength.
+pub(super) struct InStep {
+    /// The located points.
+    pub(super) found: Vec<Located>,
+    /// The last error of a location (ends the run after `found`).
+    pub(super) error: Option<Error>,
+    /// The user events at the end of the step.
+    pub(super) events: Vec<f64>,
+}
+
 impl<P: Problem + ?Sized> Steps<'_, P> {
     /// The special points inside the accepted step x₀ → `c` of arclength
-    /// `ds`, located and sorted by arclength, with the last location error.
-    pub(super) fn special_points_in_step(
-        &mut self,
-        c: &Corrected,
-        ds: f64,
-    ) -> (Vec<Located>, Option<Error>) {
+    /// `ds`. A stop value is looked for on each piece of the step between
+    /// located folds, so that a step over a fold cannot pass over a value
+    /// it reaches twice.
+    pub(super) fn special_points_in_step(&mut self, c: &Corrected, ds: f64) -> InStep {
         let q = self.cont.parameter;
         let mut found: Vec<Located> = Vec::new();
-        let mut err: Option<Error> = None;
+        let mut error: Option<Error> = None;
         let log_ref = self.det0.log_abs;
         let mut watches: Vec<(Watch, f64, f64)> = Vec::new();
         if !self.skip_detection {
@@ -112,40 +116,96 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
                 watches.push((Watch::BranchPoint, self.det0.sign, f1));
             }
         }
-        for (i, v) in self.cont.stops.iter().enumerate() {
-            let (f0, f1) = (self.x0.p[q] - v, c.x.p[q] - v);
-            if f0 != 0.0 && f0 * f1 <= 0.0 {
-                watches.push((Watch::Stop(i), f0, f1));
-            }
-        }
-        for i in 0..self.cont.events.len() {
-            let x0 = self.x0.clone();
-            let f0 = self.event_value(i, &x0);
-            let f1 = self.event_value(i, &c.x);
-            match (f0, f1) {
-                (Ok(f0), Ok(f1)) if f0 != 0.0 && f0 * f1 <= 0.0 => {
-                    watches.push((Watch::Event(i), f0, f1))
-                }
-                (Err(e), _) | (_, Err(e)) => err = Some(e),
-                _ => {}
-            }
-        }
         for (w, f0, f1) in watches {
             let kind = match w {
                 Watch::Fold => PointKind::Fold,
-                Watch::BranchPoint => PointKind::BranchPoint,
-                Watch::Stop(_) => PointKind::ParameterValue,
-                Watch::Event(i) => PointKind::Event(i),
+                _ => PointKind::BranchPoint,
             };
-            let stop = matches!(w, Watch::Stop(_) | Watch::Event(_));
-            match self.locate(w, f0, f1, ds, log_ref) {
-                Ok((cs, s)) => found.push((cs, s, kind, stop)),
+            match self.locate(w, (0.0, f0), (ds, f1), log_ref) {
+                Ok((cs, s)) => found.push((cs, s, kind, false)),
+                Err(e) => error = Some(e),
+            }
+        }
+        // λ at the ends of the pieces between located folds.
+        let mut knots = vec![(0.0, self.x0.p[q])];
+        knots.extend(
+            found
+                .iter()
+                .filter(|f| f.2 == PointKind::Fold)
+                .map(|f| (f.1, f.0.x.p[q])),
+        );
+        knots.push((ds, c.x.p[q]));
+        for i in 0..self.cont.stops.len() {
+            let v = self.cont.stops[i];
+            let piece = knots.windows(2).find(|k| {
+                let (f0, f1) = (k[0].1 - v, k[1].1 - v);
+                (f0 != 0.0 || k[0].0 > 0.0) && f0 * f1 <= 0.0
+            });
+            if let Some(k) = piece {
+                let (a, b) = ((k[0].0, k[0].1 - v), (k[1].0, k[1].1 - v));
+                match self.locate(Watch::Stop(i), a, b, log_ref) {
+                    Ok((cs, s)) => {
+                        let cs = self.pin_parameter(cs, v);
+                        found.push((cs, s, PointKind::ParameterValue, true));
+                    }
+                    Err(e) => error = Some(e),
+                }
+            }
+        }
+        let mut events = Vec::with_capacity(self.cont.events.len());
+        for i in 0..self.cont.events.len() {
+            let f0 = self.events0[i];
+            let f1 = match self.event_value(i, &c.x) {
+                Ok(f1) => f1,
                 Err(e) => {
-                    err = Some(e);
+                    error = Some(e);
+                    f64::NAN
+                }
+            };
+            events.push(f1);
+            if f0 != 0.0 && f0 * f1 <= 0.0 {
+                match self.locate(Watch::Event(i), (0.0, f0), (ds, f1), log_ref) {
+                    Ok((cs, s)) => found.push((cs, s, PointKind::Event(i), true)),
+                    Err(e) => error = Some(e),
                 }
             }
         }
         found.sort_by(|a, b| a.1.total_cmp(&b.1));
-        (found, err)
+        InStep {
+            found,
+            error,
+            events,
+        }
+    }
+
+    /// Puts a located stop exactly on λ = `value`: Newton on the collocation
+    /// equations with λ fixed (the border row λ = value) from the located
+    /// point, then λ set to `value` (the corrector left it within rounding).
+    /// Keeps the located point if that fails (a value at a fold).
+    fn pin_parameter(&mut self, mut c: Corrected, value: f64) -> Corrected {
+        self.set_parameter_border();
+        self.sys.border.target[0] = value;
+        let mut x = c.x.clone();
+        if let Ok(stats) = newton(&mut self.sys, &mut x, self.opts, false) {
+            self.newton_iterations += u64::from(stats.iterations);
+            x.p[self.cont.parameter] = value;
+            c.x = x;
+            c.iterations += stats.iterations;
+        }
+        c
+    }
+
+    /// The user event `i` at `x`; a non-finite value is an error.
+    pub(super) fn event_value(&mut self, i: usize, x: &State) -> Result<f64> {
+        let sol = self.solution(x, Default::default())?;
+        let v = (self.cont.events[i])(&sol);
+        if v.is_finite() {
+            Ok(v)
+        } else {
+            Err(Error::NonFinite {
+                what: "stop_when event",
+                s: f64::NAN,
+            })
+        }
     }
 }

@@ -203,23 +203,44 @@ impl Continuation {
         self
     }
 
-    /// The arclength tolerance of special-point location.
+    /// The arclength tolerance of special-point location (folds, branch
+    /// points, stop values, events): the Illinois iteration stops when its
+    /// arclength changes by less (finite, > 0).
     #[must_use]
     pub fn locate_tolerance(mut self, tol: f64) -> Self {
         self.locate_tolerance = tol;
         self
     }
 
-    /// Stop where λ reaches `value` (located exactly; may be repeated).
+    /// Stop where λ first reaches `value` (finite; may be repeated for
+    /// several values, the first reached ends the run).
+    ///
+    /// The crossing is located like a fold, by arclength, and the located
+    /// point is then corrected with λ fixed at `value`: the last point of
+    /// the run has [`PointKind::ParameterValue`](super::PointKind) and
+    /// λ = `value` exactly, and the run ends with
+    /// [`Termination::ParameterValue`](super::Termination)`(value)`. A value
+    /// reached twice inside one step (the step passes over a fold) is found
+    /// on the first crossing. A value equal to λ at the start point is met
+    /// only when the branch comes back to it.
     #[must_use]
     pub fn stop_at(mut self, value: f64) -> Self {
         self.stops.push(value);
         self
     }
 
-    /// Stop where `event(solution)` crosses zero (an output functional
-    /// minus its target value), located exactly. Events are numbered in the
-    /// order they are added.
+    /// Stop where `event(solution)` crosses zero: an output functional of
+    /// the solution minus its target value (e.g. an end displacement minus
+    /// the extension wanted). Events are numbered from 0 in the order they
+    /// are added; the first to cross ends the run with
+    /// [`Termination::Event`](super::Termination)`(index)`, on a last point of
+    /// kind [`PointKind::Event`](super::PointKind)`(index)` located by
+    /// arclength to [`locate_tolerance`](Self::locate_tolerance) (the
+    /// event's value there is that tolerance times its rate of change along
+    /// the branch, or less). A crossing at the start point does not count.
+    /// An event that returns NaN or ∞ at the start is an
+    /// [`Error::NonFinite`]; later, it ends the run with
+    /// [`Termination::Failed`](super::Termination).
     #[must_use]
     pub fn stop_when(mut self, event: impl Fn(&Solution) -> f64 + Send + Sync + 'static) -> Self {
         self.events.push(Arc::new(event));

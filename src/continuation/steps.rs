@@ -32,6 +32,8 @@ pub struct Steps<'a, P: Problem + ?Sized> {
     pub(super) newton_iterations: u64,
     pub(super) ycol_a: Vec<f64>,
     pub(super) ycol_b: Vec<f64>,
+    /// The user events at x₀.
+    pub(super) events0: Vec<f64>,
 }
 
 impl Continuation {
@@ -135,6 +137,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             newton_iterations: 0,
             ycol_a: vec![0.0; len],
             ycol_b: vec![0.0; len],
+            events0: Vec::new(),
         };
         let mut y_ref = std::mem::take(&mut steps.sys.y_ref);
         steps.sys.collocation_values(&steps.x0, &mut y_ref);
@@ -159,6 +162,11 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             }
         }
         let sol = steps.solution(&steps.x0.clone(), Default::default())?;
+        for i in 0..cont.events.len() {
+            let x0 = steps.x0.clone();
+            let v = steps.event_value(i, &x0)?;
+            steps.events0.push(v);
+        }
         let first = steps.point(
             sol,
             &steps.x0.clone(),
@@ -249,13 +257,13 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         self.accepted += 1;
         let q = self.cont.parameter;
         let ds = self.ds;
-        let (found, err) = self.special_points_in_step(&c, ds);
+        let in_step = self.special_points_in_step(&c, ds);
         // Whatever factorisation is current (at the new point, a located
         // point or an earlier chord point) preconditions the next corrector;
         // Newton refreshes it when the contraction degrades.
         self.factored_at_x0 = true;
         let base = self.arclength;
-        for (cs, s, kind, stop) in found {
+        for (cs, s, kind, stop) in in_step.found {
             self.arclength = base + s;
             let sol = match self.solution(&cs.x, Default::default()) {
                 Ok(s) => s,
@@ -274,7 +282,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
                 return;
             }
         }
-        if let Some(e) = err {
+        if let Some(e) = in_step.error {
             self.fail(e);
             return;
         }
@@ -302,6 +310,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         self.t0 = c.tangent;
         self.det0 = c.det;
         self.skip_detection = false;
+        self.events0 = in_step.events;
         let mut y_ref = std::mem::take(&mut self.sys.y_ref);
         self.sys.collocation_values(&self.x0, &mut y_ref);
         self.sys.y_ref = y_ref;

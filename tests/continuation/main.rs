@@ -9,6 +9,7 @@ mod problems;
 
 mod observer;
 mod settings;
+mod stops;
 
 use std::ops::ControlFlow;
 
