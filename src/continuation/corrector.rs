@@ -28,28 +28,23 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
 
     /// Border row ⟨· − x₀, τ₀⟩ = ds.
     pub(super) fn set_tangent_border(&mut self, ds: f64) {
-        let (n, m) = (self.sys.n, self.sys.m);
         self.sys.collocation_values(&self.t0, &mut self.ycol_a);
         self.sys.collocation_values(&self.x0, &mut self.ycol_b);
+        let border = &mut self.sys.border;
+        self.norm.row(
+            (&self.ycol_a, &self.t0.p),
+            &self.sys.free,
+            &mut border.coef_y,
+            &mut border.coef_q,
+        );
         let mut target = ds;
-        for j in 0..self.sys.nn {
-            let h = self.sys.h(j);
-            for k in 0..m {
-                let w = h * self.sys.tab.b[k];
-                let o = (j * m + k) * n;
-                for i in 0..n {
-                    let c = w * self.weights[i] * self.ycol_a[o + i];
-                    self.sys.border.coef_y[o + i] = c;
-                    target += c * self.ycol_b[o + i];
-                }
-            }
+        for (c, x) in border.coef_y.iter().zip(&self.ycol_b) {
+            target += c * x;
         }
-        for (qi, &q) in self.sys.free.iter().enumerate() {
-            let c = self.cont.parameter_weight * self.t0.p[q];
-            self.sys.border.coef_q[qi] = c;
+        for (c, &q) in border.coef_q.iter().zip(&self.sys.free) {
             target += c * self.x0.p[q];
         }
-        self.sys.border.target[0] = target;
+        border.target[0] = target;
     }
 
     /// Solves J τ = e_border with the current factorisation.
@@ -109,49 +104,20 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
 
     /// The tangent at `x` without a new factorisation: iterative
     /// refinement of [F_x(x); τ₀ᵀ] τ = e preconditioned by the current
-    /// (chord) factorisation, with F_x(x)τ by central differences of the
-    /// residual (step 1e-6 relative: error ~1e-12). `None` when it does not
-    /// contract.
+    /// (chord) factorisation, with F_x(x)τ by
+    /// [`residual_derivative`](Self::residual_derivative). `None` when it
+    /// does not contract.
     pub(super) fn refined_tangent(&mut self, x: &State) -> Option<State> {
         let free = self.sys.free.clone();
         let mut t = self.t0.clone();
-        let mut rp = self.sys.zero_residual();
-        let mut rm = self.sys.zero_residual();
+        let mut work = self.difference(x);
         let mut d = self.sys.zero_state();
-        let mut xp = x.clone();
-        let mut xm = x.clone();
-        let xn = x.y.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
         let mut prev = f64::INFINITY;
         for _ in 0..8 {
-            let tn = t.y.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
-            let tn = free.iter().fold(tn, |a, &q| a.max(t.p[q].abs()));
-            let eps = 1e-6 * (1.0 + xn) / tn.max(1e-300);
-            xp.clone_from(x);
-            xp.axpy(eps, &t, &free);
-            xm.clone_from(x);
-            xm.axpy(-eps, &t, &free);
-            self.sys.residual(&xp, &mut rp).ok()?;
-            self.sys.residual(&xm, &mut rm).ok()?;
-            let inv = 0.5 / eps;
-            for (a, b) in rp
-                .stage
-                .iter_mut()
-                .chain(rp.cont.iter_mut())
-                .chain(rp.bc.iter_mut())
-                .chain(rp.dense.iter_mut())
-                .zip(
-                    rm.stage
-                        .iter()
-                        .chain(&rm.cont)
-                        .chain(&rm.bc)
-                        .chain(&rm.dense),
-                )
-            {
-                *a = (*a - b) * inv;
-            }
-            let last = rp.dense.len() - 1;
-            rp.dense[last] -= 1.0;
-            self.sys.solve(&rp, &mut d).ok()?;
+            self.residual_derivative(x, &t, &mut work).ok()?;
+            let last = work.out.dense.len() - 1;
+            work.out.dense[last] -= 1.0;
+            self.sys.solve(&work.out, &mut d).ok()?;
             t.axpy(1.0, &d, &free);
             let nd = scaled_norm(&d, &t, &free);
             if nd <= 1e-10 {

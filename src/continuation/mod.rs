@@ -15,7 +15,8 @@
 //! The files: `settings` (the builder and its validation), `run` and
 //! `steps` (the two ways to drive a run), `observer`, `termination`,
 //! `point`, `norm` (the integral inner product), `corrector` (predictor,
-//! chord Newton, tangent), `step_control`, `locate` (special points),
+//! chord Newton, tangent), `difference` (F_x·t by central differences),
+//! `step_control`, `locate` (special points),
 //! `switch` (branch switching).
 //!
 //! ## The method
@@ -64,6 +65,7 @@
 #![allow(clippy::needless_range_loop)]
 
 mod corrector;
+mod difference;
 mod locate;
 mod norm;
 mod observer;

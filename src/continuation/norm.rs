@@ -1,9 +1,109 @@
-//! The integral inner product of the continuation (module docs).
+//! The integral inner product of the continuation (module docs):
+//!
+//! ```text
+//!   ⟨a, b⟩ = Σ_i w_i ∫₀¹ a_i(s) b_i(s) ds + θ Σ_q a_q b_q
+//! ```
+//!
+//! over the solution components i and the free parameters q (the solver's
+//! and λ), the integrals by the Gauss rule of the collocation: on a mesh of
+//! widths h_j with Gauss weights b_k it is Σ_r W_r a_r b_r over the values
+//! a_r = a_i(s_jk) at the collocation points, W_r = h_j b_k w_i. The one
+//! place this product is written: the corrector's border row, the tangent
+//! normalisation, the angle check and [`Continuation::distance`] all use
+//! [`IntegralNorm`].
 
 use super::{Continuation, Steps};
 use crate::bvp::system::State;
 use crate::bvp::{Problem, Solution};
 use crate::error::{Error, Result};
+
+/// The quadrature weights W_r of the integral inner product on one mesh, and
+/// the parameter weight θ.
+#[derive(Debug, Clone)]
+pub(super) struct IntegralNorm {
+    quadrature: Vec<f64>,
+    theta: f64,
+}
+
+impl IntegralNorm {
+    /// W_r = h_j b_k w_i for r = (j m + k) n + i, the layout of the
+    /// collocation values.
+    pub(super) fn new(
+        widths: impl Iterator<Item = f64>,
+        gauss: &[f64],
+        weights: &[f64],
+        theta: f64,
+    ) -> Self {
+        let mut quadrature = Vec::new();
+        for h in widths {
+            for bk in gauss {
+                let w = h * bk;
+                quadrature.extend(weights.iter().map(|wi| w * wi));
+            }
+        }
+        IntegralNorm { quadrature, theta }
+    }
+
+    /// The solution part Σ_r W_r a_r b_r of ⟨a, b⟩ (collocation values).
+    pub(super) fn values(&self, a: &[f64], b: &[f64]) -> f64 {
+        let mut s = 0.0;
+        for ((w, x), y) in self.quadrature.iter().zip(a).zip(b) {
+            s += w * x * y;
+        }
+        s
+    }
+
+    /// ⟨a, b⟩ from the collocation values and the parameters, summed over
+    /// the parameters `free`.
+    pub(super) fn inner(
+        &self,
+        (a, ap): (&[f64], &[f64]),
+        (b, bp): (&[f64], &[f64]),
+        free: &[usize],
+    ) -> f64 {
+        let mut s = self.values(a, b);
+        for &q in free {
+            s += self.theta * ap[q] * bp[q];
+        }
+        s
+    }
+
+    /// The border row ⟨·, t⟩: coefficients W_r t_r of the collocation
+    /// values into `coef_y`, θ t_q of the parameters `free` into `coef_q`.
+    pub(super) fn row(
+        &self,
+        (t, tp): (&[f64], &[f64]),
+        free: &[usize],
+        coef_y: &mut [f64],
+        coef_q: &mut [f64],
+    ) {
+        for ((c, w), v) in coef_y.iter_mut().zip(&self.quadrature).zip(t) {
+            *c = w * v;
+        }
+        for (c, &q) in coef_q.iter_mut().zip(free) {
+            *c = self.theta * tp[q];
+        }
+    }
+
+    /// ‖a − b‖ from the collocation values and the parameters `free`.
+    pub(super) fn distance(
+        &self,
+        (a, ap): (&[f64], &[f64]),
+        (b, bp): (&[f64], &[f64]),
+        free: &[usize],
+    ) -> f64 {
+        let mut s = 0.0;
+        for ((w, x), y) in self.quadrature.iter().zip(a).zip(b) {
+            let d = x - y;
+            s += w * (d * d);
+        }
+        for &q in free {
+            let d = ap[q] - bp[q];
+            s += self.theta * (d * d);
+        }
+        s.sqrt()
+    }
+}
 
 impl Continuation {
     /// The distance ‖a − b‖ of two solutions in this continuation's norm
@@ -36,47 +136,35 @@ impl Continuation {
                 });
             }
         }
-        let (ya, yb) = (a.collocation_values(), b.collocation_values());
         let mesh = a.mesh();
-        let mut sum = 0.0;
-        for j in 0..mesh.intervals() {
-            let h = mesh.width(j);
-            for (k, bk) in tab.b.iter().enumerate() {
-                for i in 0..n {
-                    let w = self.weights.as_ref().map_or(1.0, |w| w[i]);
-                    sum += h * bk * w * (ya[(i, j * tab.m + k)] - yb[(i, j * tab.m + k)]).powi(2);
-                }
-            }
-        }
-        for &q in self.solver.free().iter().chain([&self.parameter]) {
-            sum += self.parameter_weight * (a.parameters()[q] - b.parameters()[q]).powi(2);
-        }
-        Ok(sum.sqrt())
+        let weights = self.weights.clone().unwrap_or_else(|| vec![1.0; n]);
+        let norm = IntegralNorm::new(
+            (0..mesh.intervals()).map(|j| mesh.width(j)),
+            &tab.b,
+            &weights,
+            self.parameter_weight,
+        );
+        let mut free = self.solver.free().to_vec();
+        free.push(self.parameter);
+        let (ya, yb) = (a.collocation_values(), b.collocation_values());
+        Ok(norm.distance(
+            (ya.as_slice(), a.parameters()),
+            (yb.as_slice(), b.parameters()),
+            &free,
+        ))
     }
 }
 
 impl<P: Problem + ?Sized> Steps<'_, P> {
+    /// ⟨a, b⟩ of two states on the run's mesh.
     pub(super) fn inner(&mut self, a: &State, b: &State) -> f64 {
-        let (n, m) = (self.sys.n, self.sys.m);
         self.sys.collocation_values(a, &mut self.ycol_a);
         self.sys.collocation_values(b, &mut self.ycol_b);
-        let mut s = 0.0;
-        for j in 0..self.sys.nn {
-            let h = self.sys.h(j);
-            for k in 0..m {
-                let w = h * self.sys.tab.b[k];
-                let o = (j * m + k) * n;
-                for i in 0..n {
-                    s += w * self.weights[i] * self.ycol_a[o + i] * self.ycol_b[o + i];
-                }
-            }
-        }
-        for &q in &self.sys.free {
-            s += self.cont.parameter_weight * a.p[q] * b.p[q];
-        }
-        s
+        self.norm
+            .inner((&self.ycol_a, &a.p), (&self.ycol_b, &b.p), &self.sys.free)
     }
 
+    /// ‖a‖.
     pub(super) fn norm(&mut self, a: &State) -> f64 {
         self.inner(a, a).sqrt()
     }

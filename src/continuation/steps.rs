@@ -3,6 +3,7 @@
 use std::collections::VecDeque;
 use std::fmt;
 
+use super::norm::IntegralNorm;
 use super::{BranchSide, Continuation, Point, PointKind, Termination};
 use crate::bvp::system::{State, System};
 use crate::bvp::{NewtonOptions, Problem, Solution, finish};
@@ -16,7 +17,7 @@ pub struct Steps<'a, P: Problem + ?Sized> {
     pub(super) sys: System<'a, P>,
     pub(super) mesh: crate::bvp::Mesh,
     pub(super) opts: NewtonOptions,
-    pub(super) weights: Vec<f64>,
+    pub(super) norm: IntegralNorm,
     pub(super) x0: State,
     pub(super) t0: State,
     pub(super) det0: Det,
@@ -103,6 +104,12 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         let mut sys = System::new(problem, mesh.points().to_vec(), tab, free, 1)?;
         sys.linear = cont.solver.linear();
         let weights = cont.weights.clone().unwrap_or_else(|| vec![1.0; n]);
+        let norm = IntegralNorm::new(
+            (0..mesh.intervals()).map(|j| mesh.width(j)),
+            &sys.tab.b,
+            &weights,
+            cont.parameter_weight,
+        );
         let x0 = State {
             y: start.y.clone(),
             k: start.k.clone(),
@@ -117,7 +124,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
                 tol: cont.solver.newton_options().tol,
                 max_iter: cont.max_newton,
             },
-            weights,
+            norm,
             x0,
             t0: State {
                 y: Vec::new(),
