@@ -4,7 +4,7 @@
 use super::corrector::Corrected;
 use super::{PointKind, Steps};
 use crate::bvp::system::State;
-use crate::bvp::{Problem, newton};
+use crate::bvp::{Problem, Solution, newton};
 use crate::error::{Error, Result};
 
 /// What the location iteration is tracking.
@@ -93,6 +93,8 @@ pub(super) struct InStep {
     pub(super) error: Option<Error>,
     /// The user events at the end of the step.
     pub(super) events: Vec<f64>,
+    /// The solution at the end of the step, if the events needed it.
+    pub(super) solution: Option<Solution>,
 }
 
 impl<P: Problem + ?Sized> Steps<'_, P> {
@@ -153,14 +155,22 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
             }
         }
         let mut events = Vec::with_capacity(self.cont.events.len());
+        let mut solution = None;
+        if !self.cont.events.is_empty() {
+            match self.solution(&c.x, Default::default()) {
+                Ok(sol) => solution = Some(sol),
+                Err(e) => error = Some(e),
+            }
+        }
         for i in 0..self.cont.events.len() {
             let f0 = self.events0[i];
-            let f1 = match self.event_value(i, &c.x) {
-                Ok(f1) => f1,
-                Err(e) => {
+            let f1 = match solution.as_ref().map(|sol| self.event_at(i, sol)) {
+                Some(Ok(f1)) => f1,
+                Some(Err(e)) => {
                     error = Some(e);
                     f64::NAN
                 }
+                None => f64::NAN,
             };
             events.push(f1);
             if f0 != 0.0 && f0 * f1 <= 0.0 {
@@ -175,6 +185,7 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
             found,
             error,
             events,
+            solution,
         }
     }
 
@@ -198,7 +209,12 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
     /// The user event `i` at `x`; a non-finite value is an error.
     pub(super) fn event_value(&mut self, i: usize, x: &State) -> Result<f64> {
         let sol = self.solution(x, Default::default())?;
-        let v = (self.cont.events[i])(&sol);
+        self.event_at(i, &sol)
+    }
+
+    /// The user event `i` on `sol`; a non-finite value is an error.
+    pub(super) fn event_at(&self, i: usize, sol: &Solution) -> Result<f64> {
+        let v = (self.cont.events[i])(sol);
         if v.is_finite() {
             Ok(v)
         } else {

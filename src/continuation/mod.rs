@@ -54,15 +54,16 @@
 //! failed corrector, or a tangent turning by more than the maximum angle,
 //! halves Δs and retries. Folds are sign changes of dλ/ds,
 //! branch points sign changes of det [F_x; τᵀ]; both are located by the
-//! Illinois (modified regula falsi) iteration on the arclength of the step.
+//! Illinois (modified regula falsi) iteration on the arclength of the step,
+//! as are the stops: a requested value of λ (looked for on each piece of
+//! the step between located folds, then corrected with λ fixed, so that
+//! the run ends exactly on it) and the zeros of user events.
 //! At a branch point the second null vector φ of [F_x; τᵀ] (one solve with
 //! the nearly singular factorisation, orthogonalised against τ) starts the
 //! bifurcating branch in either direction.
 //!
 //! References: E. Doedel et al., *AUTO-07P* (2007), §§ 8–10; H. B. Keller,
 //! *Lectures on Numerical Methods in Bifurcation Problems* (1987).
-
-#![allow(clippy::needless_range_loop)]
 
 mod corrector;
 mod difference;

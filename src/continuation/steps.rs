@@ -170,8 +170,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         }
         let sol = steps.solution(&steps.x0.clone(), Default::default())?;
         for i in 0..cont.events.len() {
-            let x0 = steps.x0.clone();
-            let v = steps.event_value(i, &x0)?;
+            let v = steps.event_at(i, &sol)?;
             steps.events0.push(v);
         }
         let first = steps.point(
@@ -294,7 +293,10 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             return;
         }
         self.arclength = base + ds;
-        let sol = match self.solution(&c.x, Default::default()) {
+        let sol = match in_step
+            .solution
+            .map_or_else(|| self.solution(&c.x, Default::default()), Ok)
+        {
             Ok(s) => s,
             Err(e) => {
                 self.fail(e);
