@@ -1,6 +1,7 @@
 //! Traces the Bratu branch y'' + λ e^y = 0, y(0) = y(1) = 0 from λ = 0
 //! through its fold and up the upper branch until y(½) = 4, printing
-//! every special point and writing the branch as CSV.
+//! every special point (through the observer's hooks), every 20th point as
+//! progress, and writing the branch as CSV.
 //!
 //! Run: `cargo run --release --example bratu [-- OUT.csv]`
 //! (default output `target/hockle/bratu.csv`).
@@ -10,7 +11,51 @@ use std::ops::ControlFlow;
 
 use hockle::bvp::Collocation;
 use hockle::bvp::classic::Bratu;
-use hockle::continuation::{Continuation, Point, PointKind};
+use hockle::continuation::{Continuation, Observer, Point, Termination};
+
+/// Prints the folds, branch points and the end of the run.
+#[derive(Default)]
+struct Report {
+    folds: usize,
+}
+
+impl Observer for Report {
+    fn start(&mut self, settings: &Continuation, start: &Point) -> ControlFlow<()> {
+        println!("{settings}\nstart lambda={}", start.parameter());
+        ControlFlow::Continue(())
+    }
+
+    fn fold(&mut self, p: &Point) -> ControlFlow<()> {
+        self.folds += 1;
+        println!(
+            "fold lambda={:.15} y'(0)={:.12} y(1/2)={:.12} s={:.6}",
+            p.parameter(),
+            p.solution().at_mesh(0)[1],
+            p.solution().eval(0.5)[0],
+            p.arclength()
+        );
+        ControlFlow::Continue(())
+    }
+
+    fn branch_point(&mut self, p: &Point) -> ControlFlow<()> {
+        println!(
+            "branch-point lambda={:.15} s={:.6}",
+            p.parameter(),
+            p.arclength()
+        );
+        ControlFlow::Continue(())
+    }
+
+    fn finish(&mut self, termination: &Termination) {
+        println!("{} fold(s); {termination}", self.folds);
+    }
+}
+
+/// Progress: one line per point it is shown.
+fn progress(p: &Point) -> ControlFlow<()> {
+    println!("  {p}");
+    ControlFlow::Continue(())
+}
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let out = std::env::args()
@@ -21,39 +66,20 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     let solver = Collocation::new().points(4).intervals(20);
     let start = solver.solve(&Bratu::default(), |_s: f64| [0.0, 0.0], &[0.0])?;
-    let t = std::time::Instant::now();
-    let mut passed_fold = false;
-    let branch = Continuation::new(0)
+    let cont = Continuation::new(0)
         .solver(solver)
         .step(0.1)
         .max_steps(400)
         // Stop on the upper branch where y(½) = 4 (λ ≈ 0.6).
-        .stop_when(|sol| sol.eval(0.5)[0] - 4.0)
-        .run(&Bratu::default(), &start, |p: &Point| {
-            match p.kind() {
-                PointKind::Fold => {
-                    passed_fold = true;
-                    println!(
-                        "fold lambda={:.15} y'(0)={:.12} y(1/2)={:.12} s={:.6}",
-                        p.parameter(),
-                        p.solution().at_mesh(0)[1],
-                        p.solution().eval(0.5)[0],
-                        p.arclength()
-                    );
-                }
-                PointKind::BranchPoint => println!(
-                    "branch-point lambda={:.15} s={:.6}",
-                    p.parameter(),
-                    p.arclength()
-                ),
-                _ => {}
-            }
-            ControlFlow::Continue(())
-        })?;
+        .stop_when(|sol| sol.eval(0.5)[0] - 4.0);
+    let t = std::time::Instant::now();
+    let run = cont.run(&Bratu::default(), &start, Report::default())?;
     let elapsed = t.elapsed();
+    // The same run, showing every 20th point (and the special ones).
+    cont.run(&Bratu::default(), &start, progress.every(20))?;
     let mut f = std::io::BufWriter::new(std::fs::File::create(&out)?);
     writeln!(f, "arclength,lambda,dy0,y_half,kind,newton_iterations")?;
-    for p in branch.points() {
+    for p in run.points() {
         writeln!(
             f,
             "{},{},{},{},{},{}",
@@ -66,10 +92,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         )?;
     }
     println!(
-        "{} points in {:.3} ms ({}); fold passed: {passed_fold}; CSV: {out}",
-        branch.points().len(),
+        "{} points in {:.3} ms; CSV: {out}",
+        run.points().len(),
         elapsed.as_secs_f64() * 1e3,
-        branch.termination()
     );
     Ok(())
 }

@@ -186,6 +186,17 @@ pub enum Error {
         /// The point's kind, in words.
         kind: &'static str,
     },
+    /// The tangent turned by more than the maximum angle between two
+    /// continuation steps, even at the minimum step size.
+    #[error(
+        "the tangent turned by {angle:.3e} rad in one step (the limit is {max_angle:.3e} rad) even at the minimum step"
+    )]
+    StepAngleTooLarge {
+        /// The angle between successive tangents, radians.
+        angle: f64,
+        /// The limit ([`crate::continuation::Continuation::max_angle`]).
+        max_angle: f64,
+    },
     // ----- rod, spring ---------------------------------------------------
     /// A pull's target cannot be reached: a non-finite value, a force of 0
     /// or an extension equal to the rest extension (the rest state itself),

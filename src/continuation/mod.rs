@@ -4,11 +4,20 @@
 //!
 //! | type | role |
 //! |---|---|
-//! | [`Continuation`] | the settings (builder; every default listed in [`Continuation::new`]) |
-//! | [`Trace`] | a step-by-step iterator over the points of one branch |
-//! | [`Observer`] | hooks called by [`Continuation::run`] (closures and `()` implement it) |
-//! | [`Branch`] | every point computed, in order, with the [`Termination`] reason |
-//! | [`Point`] | one solution on the branch, with arclength, tangent sign, determinant sign and its [`PointKind`] |
+//! | [`Continuation`] | the settings (builder; every default listed in [`Continuation::new`], all checked before any work) |
+//! | [`Continuation::run`] → [`Run`] | every point computed, in order, with the [`Termination`] |
+//! | [`Continuation::steps`] → [`Steps`] | the same run as a step-by-step iterator (drive the loop yourself) |
+//! | [`Observer`] | hooks of a run: `start`, `point`, `fold`, `branch_point`, `step_rejected`, `finish` (closures and `()` implement it; [`Every`] thins it) |
+//! | [`Termination`] | why a run ended: step limit, stop value or event reached, stopped by the observer, or failed with a typed [`Error`](crate::Error) |
+//! | [`Point`] | one solution on the branch, with arclength, dλ/ds, determinant sign and its [`PointKind`] |
+//! | [`BranchSide`] | which side of a branch point [`Continuation::run_from_branch_point`] starts on |
+//!
+//! The files: `settings` (the builder and its validation), `run` and
+//! `steps` (the two ways to drive a run), `observer`, `termination`,
+//! `point`, `norm` (the integral inner product), `corrector` (predictor,
+//! chord Newton, tangent), `difference` (F_x·t by central differences),
+//! `step_control`, `locate` (special points),
+//! `switch` (branch switching).
 //!
 //! ## The method
 //!
@@ -45,7 +54,10 @@
 //! failed corrector, or a tangent turning by more than the maximum angle,
 //! halves Δs and retries. Folds are sign changes of dλ/ds,
 //! branch points sign changes of det [F_x; τᵀ]; both are located by the
-//! Illinois (modified regula falsi) iteration on the arclength of the step.
+//! Illinois (modified regula falsi) iteration on the arclength of the step,
+//! as are the stops: a requested value of λ (looked for on each piece of
+//! the step between located folds, then corrected with λ fixed, so that
+//! the run ends exactly on it) and the zeros of user events.
 //! At a branch point the second null vector φ of [F_x; τᵀ] (one solve with
 //! the nearly singular factorisation, orthogonalised against τ) starts the
 //! bifurcating branch in either direction.
@@ -53,8 +65,23 @@
 //! References: E. Doedel et al., *AUTO-07P* (2007), §§ 8–10; H. B. Keller,
 //! *Lectures on Numerical Methods in Bifurcation Problems* (1987).
 
-#![allow(clippy::needless_range_loop)]
+mod corrector;
+mod difference;
+mod locate;
+mod norm;
+mod observer;
+mod point;
+mod run;
+mod settings;
+mod step_control;
+mod steps;
+mod switch;
+mod termination;
 
-mod tracer;
-
-pub use tracer::{Branch, Continuation, Direction, Observer, Point, PointKind, Termination, Trace};
+pub use observer::{Every, Observer};
+pub use point::{Point, PointKind};
+pub use run::Run;
+pub use settings::Continuation;
+pub use steps::Steps;
+pub use switch::BranchSide;
+pub use termination::Termination;

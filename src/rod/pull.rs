@@ -29,11 +29,12 @@
 //! on), which lets the corrector keep its factorisation. The target is a
 //! stop of the continuation: the last point is located on it.
 
+use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
 
 use super::{Equilibrium, Rod};
 use crate::bvp::{Collocation, Mesh, Solution};
-use crate::continuation::{Continuation, Observer, Point, PointKind, Termination, Trace};
+use crate::continuation::{Continuation, Observer, Point, PointKind, Steps, Termination};
 use crate::curve::{Fold, FoldKind, ForceExtension, ForcePoint};
 use crate::error::{Error, Result};
 use crate::load::{Control, Target};
@@ -410,9 +411,10 @@ impl Pull {
         })
     }
 
-    /// Runs the pull to its target, calling `observer` at every
-    /// continuation point (the rest state first; located folds are points of
-    /// kind [`PointKind::Fold`]).
+    /// Runs the pull to its target, calling `observer`'s hooks as
+    /// [`Continuation::run`] does: `start` at the rest state, `point` at
+    /// every point (located folds are points of kind [`PointKind::Fold`]),
+    /// `fold` at each located fold, `finish` with the termination.
     ///
     /// A run that cannot go on (Newton failure at the smallest step, the
     /// step limit, the observer) keeps its points and says why in
@@ -428,9 +430,22 @@ impl Pull {
         let mut recorder = Recorder::new(&start, self.locate_folds);
         let mut observer = observer;
         let mut stopped = false;
+        let mut first = true;
         for p in trace.by_ref() {
             recorder.record(&p)?;
-            if observer.point(&p).is_break() {
+            let mut flow = if first {
+                observer.start(start.continuation(), &p)
+            } else {
+                ControlFlow::Continue(())
+            };
+            first = false;
+            if flow.is_continue() {
+                flow = observer.point(&p);
+            }
+            if flow.is_continue() && p.kind() == PointKind::Fold {
+                flow = observer.fold(&p);
+            }
+            if flow.is_break() {
                 stopped = true;
                 break;
             }
@@ -441,8 +456,9 @@ impl Pull {
             trace
                 .termination()
                 .cloned()
-                .unwrap_or(Termination::MaxSteps(trace.steps()))
+                .unwrap_or(Termination::MaxSteps(trace.accepted()))
         };
+        observer.finish(&termination);
         Ok(PullRun {
             rod: start.rod,
             target: start.target,
@@ -450,7 +466,7 @@ impl Pull {
             folds: recorder.folds,
             loops: recorder.loops,
             termination,
-            steps: trace.steps(),
+            steps: trace.accepted(),
             rejected: trace.rejected(),
             newton_iterations: trace.newton_iterations()
                 + u64::from(start.rest.newton().iterations),
@@ -489,8 +505,8 @@ impl Start {
     ///
     /// # Errors
     /// An error of the first tangent computation.
-    pub fn steps(&self) -> Result<Trace<'_, Rod>> {
-        self.continuation.trace(&self.rod, &self.rest)
+    pub fn steps(&self) -> Result<Steps<'_, Rod>> {
+        self.continuation.steps(&self.rod, &self.rest)
     }
 }
 

@@ -7,10 +7,14 @@ mod common;
 #[allow(dead_code)]
 mod problems;
 
+mod observer;
+mod settings;
+mod stops;
+
 use std::ops::ControlFlow;
 
 use hockle::bvp::{Collocation, Problem};
-use hockle::continuation::{Continuation, Direction, PointKind, Termination};
+use hockle::continuation::{BranchSide, Continuation, PointKind, Termination};
 use problems::Bratu;
 
 /// λ* and y(½) at the fold, from tests/data/bvp_references.py (closed form,
@@ -98,7 +102,7 @@ fn branch_points_of_the_trivial_branch_and_switching() {
     // p² − 1 ≈ ε ∫sin³/(π² ∫sin²) = 8ε/(3π³) with ε ≈ u(½) (first order).
     let slope = 8.0 / (3.0 * std::f64::consts::PI.powi(3));
     let mut eps_by_dir = Vec::new();
-    for dir in [Direction::Positive, Direction::Negative] {
+    for dir in [BranchSide::Positive, BranchSide::Negative] {
         let cont1 = cont.clone().step(0.02).max_steps(3);
         let b = cont1
             .run_from_branch_point(&Quadratic, bps[0], dir, ())
@@ -170,7 +174,7 @@ fn euler_buckling_loads_and_post_buckled_branch() {
         .step(0.1)
         .max_steps(200)
         .stop_when(|s| s.at_mesh(0)[0].abs() - 2.5)
-        .run_from_branch_point(&Euler, bps[0], Direction::Positive, ())
+        .run_from_branch_point(&Euler, bps[0], BranchSide::Positive, ())
         .unwrap();
     assert_eq!(post.termination(), &Termination::Event(0));
     let mut worst: f64 = 0.0;
@@ -235,7 +239,7 @@ impl Problem for Faulty {
 }
 
 /// Continues `p` from its rest state at λ = 0 in steps of 0.1.
-fn run_faulty(p: &Faulty) -> hockle::continuation::Branch {
+fn run_faulty(p: &Faulty) -> hockle::continuation::Run {
     let start = Collocation::new()
         .intervals(10)
         .solve(p, |_s: f64| [0.0, 0.0], &[0.0])
@@ -255,7 +259,13 @@ fn nan_right_hand_side_ends_the_run_and_keeps_the_points() {
     };
     let b = run_faulty(&p);
     assert!(
-        matches!(b.termination(), Termination::NonFinite(_)),
+        matches!(
+            b.termination(),
+            Termination::Failed {
+                error: hockle::Error::NonFinite { .. },
+                ..
+            }
+        ),
         "{}",
         b.termination()
     );
@@ -273,7 +283,13 @@ fn singular_jacobian_ends_the_run_and_keeps_the_points() {
     };
     let b = run_faulty(&p);
     assert!(
-        matches!(b.termination(), Termination::Singular(_)),
+        matches!(
+            b.termination(),
+            Termination::Failed {
+                error: hockle::Error::SingularJacobian { .. },
+                ..
+            }
+        ),
         "{}",
         b.termination()
     );
@@ -304,7 +320,10 @@ fn newton_failure_at_minimum_step_keeps_the_points() {
         .run(&p, &start, ())
         .unwrap();
     match b.termination() {
-        Termination::NewtonFailed { ds, .. } => assert_eq!(*ds, 0.05),
+        Termination::Failed {
+            ds,
+            error: hockle::Error::NewtonNotConverged { .. } | hockle::Error::NewtonDiverged { .. },
+        } => assert_eq!(*ds, 0.05),
         t => panic!("unexpected termination: {t}"),
     }
     assert!(!b.points().is_empty());
@@ -346,7 +365,7 @@ fn observer_stop_and_iterator() {
     assert_eq!(b.termination(), &Termination::Stopped);
     assert_eq!(b.points().len(), 5);
     // The iterator gives the same points.
-    let pts: Vec<_> = cont.trace(&p, &start).unwrap().take(5).collect();
+    let pts: Vec<_> = cont.steps(&p, &start).unwrap().take(5).collect();
     for (a, c) in pts.iter().zip(b.points()) {
         assert_eq!(a.parameter(), c.parameter());
     }
@@ -395,7 +414,7 @@ impl hockle::continuation::Observer for Count<'_> {
 fn angle_check_rejects_steps_and_reports() {
     // The Bratu branch turns (dλ/ds decreases from 0.957); an angle limit of
     // 1e-9 rad cannot be met once the tangent turns, so the step halves down
-    // to ds_min and the run ends with AngleTooLarge, keeping its points.
+    // to ds_min and the run fails with StepAngleTooLarge, keeping its points.
     let p = Bratu { analytic: true };
     let start = Collocation::new()
         .intervals(10)
@@ -409,7 +428,13 @@ fn angle_check_rejects_steps_and_reports() {
         .run(&p, &start, Count(&mut rejected))
         .unwrap();
     assert!(
-        matches!(b.termination(), Termination::AngleTooLarge { .. }),
+        matches!(
+            b.termination(),
+            Termination::Failed {
+                error: hockle::Error::StepAngleTooLarge { .. },
+                ..
+            }
+        ),
         "{}",
         b.termination()
     );
@@ -420,7 +445,7 @@ fn angle_check_rejects_steps_and_reports() {
 
 #[test]
 fn the_iterator_counts_steps_rejections_and_iterations() {
-    // Driving the Trace by hand gives the same counts as the observer of
+    // Driving the Steps by hand gives the same counts as the observer of
     // `run`: accepted steps = regular points, rejections = step_rejected
     // calls, and at least the corrector iterations of the accepted points.
     let p = Bratu { analytic: true };
@@ -435,15 +460,15 @@ fn the_iterator_counts_steps_rejections_and_iterations() {
         .max_steps(40);
     let mut rejected = 0;
     let b = cont.run(&p, &start, Count(&mut rejected)).unwrap();
-    let mut trace = cont.trace(&p, &start).unwrap();
+    let mut trace = cont.steps(&p, &start).unwrap();
     let pts: Vec<_> = trace.by_ref().collect();
     assert_eq!(pts.len(), b.points().len());
     let regular = pts
         .iter()
         .filter(|q| q.kind() == PointKind::Regular)
         .count();
-    assert_eq!(trace.steps(), regular);
-    assert_eq!(trace.steps(), 40);
+    assert_eq!(trace.accepted(), regular);
+    assert_eq!(trace.accepted(), 40);
     // The angle limit of 0.05 rad rejects steps where the branch turns.
     assert!(rejected > 0);
     assert_eq!(trace.rejected(), rejected);
@@ -511,7 +536,7 @@ fn distance_is_the_arclength_norm() {
         .solve(&p, |_s: f64| [0.0, 0.0], &[0.0])
         .unwrap();
     let cont = Continuation::new(0).step(0.01);
-    let pts: Vec<_> = cont.trace(&p, &start).unwrap().take(2).collect();
+    let pts: Vec<_> = cont.steps(&p, &start).unwrap().take(2).collect();
     let (a, b) = (pts[0].solution(), pts[1].solution());
     let d = cont.distance(a, b).unwrap();
     assert!(

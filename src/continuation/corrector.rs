@@ -1,0 +1,133 @@
+//! The corrector: chord Newton on the bordered system, the new tangent and
+//! the determinant sign.
+
+use super::Steps;
+use crate::bvp::system::State;
+use crate::bvp::{Problem, newton, scaled_norm};
+use crate::error::Result;
+use crate::linalg::Det;
+
+/// A corrected point with its tangent and determinant (internal).
+pub(super) struct Corrected {
+    pub(super) x: State,
+    pub(super) tangent: State,
+    pub(super) det: Det,
+    pub(super) iterations: u32,
+}
+
+impl<P: Problem + ?Sized> Steps<'_, P> {
+    /// Border row e_λᵀ (target irrelevant: only used for the first tangent).
+    pub(super) fn set_parameter_border(&mut self) {
+        let b = &mut self.sys.border;
+        b.coef_y.fill(0.0);
+        b.coef_q.fill(0.0);
+        let nq = b.coef_q.len();
+        b.coef_q[nq - 1] = 1.0;
+        b.target[0] = 0.0;
+    }
+
+    /// Border row ⟨· − x₀, τ₀⟩ = ds.
+    pub(super) fn set_tangent_border(&mut self, ds: f64) {
+        self.sys.collocation_values(&self.t0, &mut self.ycol_a);
+        self.sys.collocation_values(&self.x0, &mut self.ycol_b);
+        let border = &mut self.sys.border;
+        self.norm.row(
+            (&self.ycol_a, &self.t0.p),
+            &self.sys.free,
+            &mut border.coef_y,
+            &mut border.coef_q,
+        );
+        let mut target = ds;
+        for (c, x) in border.coef_y.iter().zip(&self.ycol_b) {
+            target += c * x;
+        }
+        for (c, &q) in border.coef_q.iter().zip(&self.sys.free) {
+            target += c * self.x0.p[q];
+        }
+        border.target[0] = target;
+    }
+
+    /// Solves J τ = e_border with the current factorisation.
+    pub(super) fn solve_border_rhs(&mut self) -> Result<State> {
+        let mut r = self.sys.zero_residual();
+        let nd = r.dense.len();
+        r.dense[nd - 1] = -1.0;
+        let mut t = self.sys.zero_state();
+        self.sys.solve(&r, &mut t)?;
+        Ok(t)
+    }
+
+    /// Corrects from x₀ at arclength `ds` along τ₀; factorises at the
+    /// result and computes its tangent and determinant.
+    pub(super) fn correct(&mut self, ds: f64, reuse: bool) -> Result<Corrected> {
+        self.set_tangent_border(ds);
+        let mut x = self.x0.clone();
+        let t0 = self.t0.clone();
+        x.axpy(ds, &t0, &self.sys.free.clone());
+        if reuse {
+            self.sys.factor_border()?;
+        }
+        let stats = newton(&mut self.sys, &mut x, self.opts, reuse)?;
+        self.newton_iterations += u64::from(stats.iterations);
+        // Without branch-point detection the determinant is not needed: when
+        // the chord corrector converged fast on the old factorisation, keep
+        // it and refine the tangent on it instead of factorising again.
+        if !self.cont.branch_points
+            && reuse
+            && stats.jacobians == 0
+            && stats.iterations <= 4
+            && let Some(mut t) = self.refined_tangent(&x)
+        {
+            let nrm = self.norm(&t);
+            t.scale(1.0 / nrm);
+            return Ok(Corrected {
+                x,
+                tangent: t,
+                det: Det {
+                    sign: f64::NAN,
+                    log_abs: f64::NAN,
+                },
+                iterations: stats.iterations,
+            });
+        }
+        let det = self.sys.factor(&x)?;
+        let mut t = self.solve_border_rhs()?;
+        let nrm = self.norm(&t);
+        t.scale(1.0 / nrm);
+        Ok(Corrected {
+            x,
+            tangent: t,
+            det,
+            iterations: stats.iterations,
+        })
+    }
+
+    /// The tangent at `x` without a new factorisation: iterative
+    /// refinement of [F_x(x); τ₀ᵀ] τ = e preconditioned by the current
+    /// (chord) factorisation, with F_x(x)τ by
+    /// [`residual_derivative`](Self::residual_derivative). `None` when it
+    /// does not contract.
+    pub(super) fn refined_tangent(&mut self, x: &State) -> Option<State> {
+        let free = self.sys.free.clone();
+        let mut t = self.t0.clone();
+        let mut work = self.difference(x);
+        let mut d = self.sys.zero_state();
+        let mut prev = f64::INFINITY;
+        for _ in 0..8 {
+            self.residual_derivative(x, &t, &mut work).ok()?;
+            let last = work.out.dense.len() - 1;
+            work.out.dense[last] -= 1.0;
+            self.sys.solve(&work.out, &mut d).ok()?;
+            t.axpy(1.0, &d, &free);
+            let nd = scaled_norm(&d, &t, &free);
+            if nd <= 1e-10 {
+                return Some(t);
+            }
+            if nd > 0.25 * prev {
+                return None;
+            }
+            prev = nd;
+        }
+        None
+    }
+}

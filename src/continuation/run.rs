@@ -1,0 +1,144 @@
+//! [`Continuation::run`]: a whole branch with its termination.
+
+use std::fmt;
+use std::ops::ControlFlow;
+
+use super::{Continuation, Observer, Point, PointKind, Steps, Termination};
+use crate::bvp::{Problem, Solution};
+use crate::error::Result;
+
+/// The result of a run: every point in order and why it ended.
+#[derive(Debug, Clone)]
+pub struct Run {
+    pub(super) points: Vec<Point>,
+    pub(super) termination: Termination,
+}
+
+impl Run {
+    /// Every point, in order.
+    #[must_use]
+    pub fn points(&self) -> &[Point] {
+        &self.points
+    }
+
+    /// Why the run ended.
+    #[must_use]
+    pub fn termination(&self) -> &Termination {
+        &self.termination
+    }
+
+    /// The located special points, in order.
+    pub fn special_points(&self) -> impl Iterator<Item = &Point> {
+        self.points.iter().filter(|p| p.is_special())
+    }
+
+    /// The located folds.
+    pub fn folds(&self) -> impl Iterator<Item = &Point> {
+        self.points.iter().filter(|p| p.kind == PointKind::Fold)
+    }
+
+    /// The located branch points.
+    pub fn branch_points(&self) -> impl Iterator<Item = &Point> {
+        self.points
+            .iter()
+            .filter(|p| p.kind == PointKind::BranchPoint)
+    }
+
+    /// The last point.
+    #[must_use]
+    pub fn last(&self) -> Option<&Point> {
+        self.points.last()
+    }
+}
+
+impl fmt::Display for Run {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(
+            f,
+            "branch of {} points; {}",
+            self.points.len(),
+            self.termination
+        )?;
+        for p in self.special_points() {
+            writeln!(f, "  {p}")?;
+        }
+        Ok(())
+    }
+}
+
+impl Continuation {
+    /// Runs to termination, calling `observer` at every point, and returns
+    /// every point with the reason the run ended.
+    ///
+    /// # Errors
+    /// As [`Continuation::steps`]; failures after the start end the run with
+    /// a [`Termination`] instead.
+    pub fn run<P: Problem + ?Sized, O: Observer>(
+        &self,
+        problem: &P,
+        start: &Solution,
+        observer: O,
+    ) -> Result<Run> {
+        let steps = self.steps(problem, start)?;
+        Ok(drive(steps, observer))
+    }
+}
+
+/// Drives `steps` to its end, calling the observer's hooks in the order
+/// documented on [`Observer`].
+pub(super) fn drive<P: Problem + ?Sized, O: Observer>(
+    mut steps: Steps<'_, P>,
+    mut observer: O,
+) -> Run {
+    let mut points = Vec::new();
+    let mut stopped = false;
+    while let Some(p) = steps.next() {
+        for ds in steps.rejections.drain(..) {
+            if observer.step_rejected(ds).is_break() {
+                stopped = true;
+            }
+        }
+        let mut flow = if stopped {
+            ControlFlow::Break(())
+        } else if points.is_empty() {
+            observer.start(steps.cont, &p)
+        } else {
+            ControlFlow::Continue(())
+        };
+        if flow.is_continue() {
+            flow = observer.point(&p);
+        }
+        if flow.is_continue() {
+            flow = match p.kind() {
+                PointKind::Fold => observer.fold(&p),
+                PointKind::BranchPoint => observer.branch_point(&p),
+                _ => ControlFlow::Continue(()),
+            };
+        }
+        points.push(p);
+        if flow.is_break() {
+            stopped = true;
+            break;
+        }
+    }
+    if !stopped {
+        for ds in steps.rejections.drain(..) {
+            if observer.step_rejected(ds).is_break() {
+                break;
+            }
+        }
+    }
+    let termination = if stopped {
+        Termination::Stopped
+    } else {
+        steps
+            .termination
+            .take()
+            .unwrap_or(Termination::MaxSteps(steps.accepted))
+    };
+    observer.finish(&termination);
+    Run {
+        points,
+        termination,
+    }
+}

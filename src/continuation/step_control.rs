@@ -1,0 +1,56 @@
+//! Step control: halving on rejection, growth by corrector iterations
+//! (module docs: AUTO-07p's rule with shifted thresholds).
+
+use super::Steps;
+use super::corrector::Corrected;
+use crate::bvp::Problem;
+use crate::error::Error;
+
+impl<P: Problem + ?Sized> Steps<'_, P> {
+    /// Corrects at the current Δs, halving it and retrying while the
+    /// corrector fails or the tangent turns by more than the maximum angle;
+    /// `None` (with the termination set) when that happens at Δs_min.
+    pub(super) fn accepted_step(&mut self) -> Option<Corrected> {
+        loop {
+            let reuse = self.factored_at_x0;
+            let res = self.correct(self.ds, reuse);
+            match res {
+                Ok(c) => {
+                    let cosang = self.inner(&c.tangent, &self.t0.clone());
+                    let angle = cosang.clamp(-1.0, 1.0).acos();
+                    if angle <= self.cont.max_angle {
+                        return Some(c);
+                    }
+                    if self.ds <= self.cont.ds_min {
+                        self.fail(Error::StepAngleTooLarge {
+                            angle,
+                            max_angle: self.cont.max_angle,
+                        });
+                        return None;
+                    }
+                }
+                Err(e) => {
+                    if self.ds <= self.cont.ds_min {
+                        self.fail(e);
+                        return None;
+                    }
+                }
+            }
+            self.factored_at_x0 = false;
+            self.ds = (0.5 * self.ds).max(self.cont.ds_min);
+            self.rejected += 1;
+            self.rejections.push(self.ds);
+        }
+    }
+
+    /// The next Δs after an accepted step whose corrector took `iterations`.
+    pub(super) fn adapt_step(&mut self, iterations: u32) {
+        let factor = match iterations {
+            0..=4 => 2.0,
+            5 => 1.5,
+            6 => 1.1,
+            _ => 0.5,
+        };
+        self.ds = (self.ds * factor).clamp(self.cont.ds_min, self.cont.ds_max);
+    }
+}

@@ -1,0 +1,344 @@
+//! The step-by-step iterator [`Steps`] and one continuation step.
+
+use std::collections::VecDeque;
+use std::fmt;
+
+use super::norm::IntegralNorm;
+use super::{BranchSide, Continuation, Point, PointKind, Termination};
+use crate::bvp::system::{State, System};
+use crate::bvp::{NewtonOptions, Problem, Solution, finish};
+use crate::error::{Error, Result};
+use crate::linalg::Det;
+
+/// The step-by-step continuation iterator (see [`Continuation::steps`]).
+/// After it returns `None`, [`Steps::termination`] says why.
+pub struct Steps<'a, P: Problem + ?Sized> {
+    pub(super) cont: &'a Continuation,
+    pub(super) sys: System<'a, P>,
+    pub(super) mesh: crate::bvp::Mesh,
+    pub(super) opts: NewtonOptions,
+    pub(super) norm: IntegralNorm,
+    pub(super) x0: State,
+    pub(super) t0: State,
+    pub(super) det0: Det,
+    pub(super) ds: f64,
+    pub(super) arclength: f64,
+    pub(super) accepted: usize,
+    pub(super) factored_at_x0: bool,
+    pub(super) skip_detection: bool,
+    pub(super) pending: VecDeque<Point>,
+    pub(super) termination: Option<Termination>,
+    pub(super) rejections: Vec<f64>,
+    pub(super) rejected: usize,
+    pub(super) newton_iterations: u64,
+    pub(super) ycol_a: Vec<f64>,
+    pub(super) ycol_b: Vec<f64>,
+    /// The user events at x₀.
+    pub(super) events0: Vec<f64>,
+}
+
+impl Continuation {
+    /// A step-by-step iterator over the branch through `start` (a solution
+    /// of the problem at its parameter values). The first item is the start
+    /// point.
+    ///
+    /// # Errors
+    /// Bad settings ([`Error::InvalidArgument`], [`Error::InvalidCount`],
+    /// [`Error::LengthMismatch`]), [`Error::IllPosed`] if the counts do not
+    /// match with λ free, or an error of the first tangent computation.
+    pub fn steps<'a, P: Problem + ?Sized>(
+        &'a self,
+        problem: &'a P,
+        start: &Solution,
+    ) -> Result<Steps<'a, P>> {
+        Steps::new(self, problem, start, None)
+    }
+}
+
+impl<P: Problem + ?Sized> fmt::Debug for Steps<'_, P> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Steps")
+            .field("steps", &self.accepted)
+            .field("ds", &self.ds)
+            .field("arclength", &self.arclength)
+            .field("termination", &self.termination)
+            .finish_non_exhaustive()
+    }
+}
+
+impl<'a, P: Problem + ?Sized> Steps<'a, P> {
+    pub(super) fn new(
+        cont: &'a Continuation,
+        problem: &'a P,
+        start: &Solution,
+        switch: Option<(State, BranchSide, f64)>,
+    ) -> Result<Self> {
+        let n = problem.dim();
+        let np = problem.parameter_count();
+        cont.validate(n, np)?;
+        let tab = cont.solver.validate()?;
+        if start.dim() != n || start.parameters().len() != np {
+            return Err(Error::LengthMismatch {
+                name: "start solution dimension",
+                found: start.dim() as u64,
+                expected: n as u64,
+            });
+        }
+        if start.points_per_interval() != tab.m {
+            return Err(Error::InvalidCount {
+                name: "start solution points per interval",
+                value: start.points_per_interval() as u64,
+                allowed: "the solver's m (solve the start with the same Collocation)",
+            });
+        }
+        let mut free: Vec<usize> = cont.solver.free().to_vec();
+        if free.contains(&cont.parameter) {
+            return Err(Error::InvalidCount {
+                name: "continuation parameter",
+                value: cont.parameter as u64,
+                allowed: "a parameter that is not already one of the solver's free parameters",
+            });
+        }
+        free.push(cont.parameter);
+        let mesh = start.mesh().clone();
+        let mut sys = System::new(problem, mesh.points().to_vec(), tab, free, 1)?;
+        sys.linear = cont.solver.linear();
+        let weights = cont.weights.clone().unwrap_or_else(|| vec![1.0; n]);
+        let norm = IntegralNorm::new(
+            (0..mesh.intervals()).map(|j| mesh.width(j)),
+            &sys.tab.b,
+            &weights,
+            cont.parameter_weight,
+        );
+        let x0 = State {
+            y: start.y.clone(),
+            k: start.k.clone(),
+            p: start.p.clone(),
+        };
+        let len = sys.y_ref.len();
+        let mut steps = Steps {
+            cont,
+            sys,
+            mesh,
+            opts: NewtonOptions {
+                tol: cont.solver.newton_options().tol,
+                max_iter: cont.max_newton,
+            },
+            norm,
+            x0,
+            t0: State {
+                y: Vec::new(),
+                k: Vec::new(),
+                p: Vec::new(),
+            },
+            det0: Det::ONE,
+            ds: cont.ds.abs().clamp(cont.ds_min, cont.ds_max),
+            arclength: 0.0,
+            accepted: 0,
+            factored_at_x0: false,
+            skip_detection: false,
+            pending: VecDeque::new(),
+            termination: None,
+            rejections: Vec::new(),
+            rejected: 0,
+            newton_iterations: 0,
+            ycol_a: vec![0.0; len],
+            ycol_b: vec![0.0; len],
+            events0: Vec::new(),
+        };
+        let mut y_ref = std::mem::take(&mut steps.sys.y_ref);
+        steps.sys.collocation_values(&steps.x0, &mut y_ref);
+        steps.sys.y_ref = y_ref;
+        match switch {
+            None => {
+                // Tangent from [F_x; e_λᵀ] τ = e, oriented by the sign of ds.
+                steps.set_parameter_border();
+                let x0 = steps.x0.clone();
+                steps.sys.factor(&x0)?;
+                let mut t = steps.solve_border_rhs()?;
+                let nrm = steps.norm(&t);
+                let sgn = if cont.ds < 0.0 { -1.0 } else { 1.0 };
+                t.scale(sgn / nrm);
+                steps.t0 = t;
+                steps.set_tangent_border(0.0);
+                steps.det0 = steps.sys.factor_border()?;
+                steps.factored_at_x0 = true;
+            }
+            Some((tangent, direction, arclength)) => {
+                steps.start_on_bifurcating_branch(tangent, direction, arclength)?;
+            }
+        }
+        let sol = steps.solution(&steps.x0.clone(), Default::default())?;
+        for i in 0..cont.events.len() {
+            let v = steps.event_at(i, &sol)?;
+            steps.events0.push(v);
+        }
+        let first = steps.point(
+            sol,
+            &steps.x0.clone(),
+            &steps.t0.clone(),
+            steps.det0,
+            PointKind::Start,
+            0,
+        );
+        steps.pending.push_back(first);
+        Ok(steps)
+    }
+
+    /// Why the run ended, once the iterator is exhausted.
+    #[must_use]
+    pub fn termination(&self) -> Option<&Termination> {
+        self.termination.as_ref()
+    }
+
+    /// The current step size |Δs|.
+    #[must_use]
+    pub fn step_size(&self) -> f64 {
+        self.ds
+    }
+
+    /// Accepted steps so far.
+    #[must_use]
+    pub fn accepted(&self) -> usize {
+        self.accepted
+    }
+
+    /// Rejected (halved and retried) steps so far.
+    #[must_use]
+    pub fn rejected(&self) -> usize {
+        self.rejected
+    }
+
+    /// Corrector iterations so far: accepted, rejected and special-point
+    /// location correctors alike (failed correctors are not counted).
+    #[must_use]
+    pub fn newton_iterations(&self) -> u64 {
+        self.newton_iterations
+    }
+
+    pub(super) fn solution(
+        &mut self,
+        x: &State,
+        stats: crate::bvp::NewtonStats,
+    ) -> Result<Solution> {
+        finish(&mut self.sys, x.clone(), self.mesh.clone(), stats)
+    }
+
+    pub(super) fn point(
+        &self,
+        solution: Solution,
+        x: &State,
+        t: &State,
+        det: Det,
+        kind: PointKind,
+        iterations: u32,
+    ) -> Point {
+        let q = self.cont.parameter;
+        Point {
+            solution,
+            parameter: x.p[q],
+            arclength: self.arclength,
+            newton_iterations: iterations,
+            dparameter: t.p[q],
+            determinant_sign: det.sign,
+            kind,
+            tangent: (kind == PointKind::BranchPoint).then(|| t.clone()),
+        }
+    }
+
+    /// Ends the run: the step failed at |Δs| with `error`.
+    pub(super) fn fail(&mut self, error: Error) {
+        self.termination = Some(Termination::Failed { ds: self.ds, error });
+    }
+
+    /// One accepted step (plus any located special points) into `pending`.
+    fn advance(&mut self) {
+        if self.accepted >= self.cont.max_steps {
+            self.termination = Some(Termination::MaxSteps(self.accepted));
+            return;
+        }
+        let Some(c) = self.accepted_step() else {
+            return;
+        };
+        self.accepted += 1;
+        let q = self.cont.parameter;
+        let ds = self.ds;
+        let in_step = self.special_points_in_step(&c, ds);
+        // Whatever factorisation is current (at the new point, a located
+        // point or an earlier chord point) preconditions the next corrector;
+        // Newton refreshes it when the contraction degrades.
+        self.factored_at_x0 = true;
+        let base = self.arclength;
+        for (cs, s, kind, stop) in in_step.found {
+            self.arclength = base + s;
+            let sol = match self.solution(&cs.x, Default::default()) {
+                Ok(s) => s,
+                Err(e) => {
+                    self.fail(e);
+                    return;
+                }
+            };
+            let p = self.point(sol, &cs.x, &cs.tangent, cs.det, kind, cs.iterations);
+            self.pending.push_back(p);
+            if stop {
+                self.termination = Some(match kind {
+                    PointKind::Event(i) => Termination::Event(i),
+                    _ => Termination::ParameterValue(cs.x.p[q]),
+                });
+                return;
+            }
+        }
+        if let Some(e) = in_step.error {
+            self.fail(e);
+            return;
+        }
+        self.arclength = base + ds;
+        let sol = match in_step
+            .solution
+            .map_or_else(|| self.solution(&c.x, Default::default()), Ok)
+        {
+            Ok(s) => s,
+            Err(e) => {
+                self.fail(e);
+                return;
+            }
+        };
+        let p = self.point(
+            sol,
+            &c.x,
+            &c.tangent,
+            c.det,
+            PointKind::Regular,
+            c.iterations,
+        );
+        self.pending.push_back(p);
+        // Accept: the new point becomes x₀; its factorisation is current
+        // unless location overwrote it.
+        let its = c.iterations;
+        self.x0 = c.x;
+        self.t0 = c.tangent;
+        self.det0 = c.det;
+        self.skip_detection = false;
+        self.events0 = in_step.events;
+        let mut y_ref = std::mem::take(&mut self.sys.y_ref);
+        self.sys.collocation_values(&self.x0, &mut y_ref);
+        self.sys.y_ref = y_ref;
+        self.adapt_step(its);
+    }
+}
+
+impl<P: Problem + ?Sized> Iterator for Steps<'_, P> {
+    type Item = Point;
+
+    fn next(&mut self) -> Option<Point> {
+        loop {
+            if let Some(p) = self.pending.pop_front() {
+                return Some(p);
+            }
+            if self.termination.is_some() {
+                return None;
+            }
+            self.advance();
+        }
+    }
+}
