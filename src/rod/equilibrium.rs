@@ -241,7 +241,10 @@ impl Equilibrium {
     ///
     /// `None` where the count is not defined: the tangent leaves that plane
     /// somewhere (its projection is shorter than ½, i.e. it stands within
-    /// 60° of the plane's normal), as in the 3D excursion of a pop-out.
+    /// 60° of the plane's normal), as in the 3D excursion of a pop-out, or
+    /// the passes and [`Self::turning_number`] differ by a whole turn or
+    /// more (they agree within a turn on every planar υ-shape and on the
+    /// helix), so that the projection misrepresents the shape.
     #[must_use]
     pub fn loops(&self) -> Option<u32> {
         measure::turning(&self.samples()).loops

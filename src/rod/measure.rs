@@ -4,30 +4,25 @@
 //! piecewise polynomials of a collocation solution up to its own degree).
 
 use core::f64::consts::PI;
+use std::sync::OnceLock;
 
 use nalgebra::{Matrix2, Matrix3, SymmetricEigen, Vector3};
 
 use super::Rod;
 use super::quat::rot;
-
-/// 5-point Gauss–Legendre nodes and weights on [0, 1].
-const GL5: [(f64, f64); 5] = [
-    (0.046_910_077_030_668_004, 0.118_463_442_528_094_54),
-    (0.230_765_344_947_158_45, 0.239_314_335_249_683_23),
-    (0.5, 0.284_444_444_444_444_45),
-    (0.769_234_655_052_841_6, 0.239_314_335_249_683_23),
-    (0.953_089_922_969_332, 0.118_463_442_528_094_54),
-];
+use crate::quadrature::GaussLegendre;
 
 /// ∫₀¹ g(s) ds by 5-point Gauss on each panel [b_i, b_{i+1}], `sub` equal
 /// sub-panels each.
 pub(crate) fn integrate<G: FnMut(f64) -> f64>(breaks: &[f64], sub: usize, mut g: G) -> f64 {
+    static GL5: OnceLock<GaussLegendre> = OnceLock::new();
+    let rule = GL5.get_or_init(|| GaussLegendre::new(5));
     let mut total = 0.0;
     for w in breaks.windows(2) {
         let h = (w[1] - w[0]) / sub as f64;
         for j in 0..sub {
             let a = w[0] + j as f64 * h;
-            for (x, wt) in GL5 {
+            for (x, wt) in rule.nodes.iter().zip(&rule.weights) {
                 total += h * wt * g(a + h * x);
             }
         }
@@ -84,7 +79,8 @@ pub(crate) const LOOP_PROJECTION_MIN: f64 = 0.5;
 /// The tangent's turning in the plane it leaves least: the turning number
 /// (net turn / 2π, continuous) and the loop count (net signed passes of the
 /// projected tangent through a reference direction, an integer; `None`
-/// where the tangent leaves the plane, |P d3| < [`LOOP_PROJECTION_MIN`]).
+/// where the tangent leaves the plane, |P d3| < [`LOOP_PROJECTION_MIN`], or
+/// where the passes and the turning number differ by a turn or more).
 ///
 /// ν is the eigenvector of the smallest eigenvalue of ∫ d3 d3ᵀ ds (k for the
 /// unstressed helix, the normal of the plane for a planar elastica). The
@@ -145,9 +141,15 @@ pub(crate) fn turning(samples: &[(f64, [f64; 13])]) -> Turning {
         passes += (next / (2.0 * PI)).floor() - (unwrapped / (2.0 * PI)).floor();
         unwrapped = next;
     }
+    let turns = (total / (2.0 * PI)).abs();
+    let passes = passes.abs();
+    // The two counts agree to within a turn on every planar υ-shape
+    // (turns = j + δ/π, |δ| < π) and on the helix (both n); where they do
+    // not, the projection misrepresents the shape and no count is given.
+    let consistent = (turns - passes).abs() < 1.0;
     Turning {
-        turns: (total / (2.0 * PI)).abs(),
-        // |passes| ≤ samples, so the conversion cannot saturate in practice.
-        loops: in_plane.then(|| passes.abs().min(f64::from(u32::MAX)) as u32),
+        turns,
+        // passes ≤ samples, so the conversion cannot saturate in practice.
+        loops: (in_plane && consistent).then(|| passes.min(f64::from(u32::MAX)) as u32),
     }
 }

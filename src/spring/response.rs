@@ -88,9 +88,11 @@ pub struct BranchMatch {
 ///   ([`crate::rod::Equilibrium::loops`]): n on the helix and on the flat
 ///   primary branch, `None` where the shape leaves its plane;
 /// - a **pop-out** is a maximum-force fold followed by the next
-///   minimum-force fold across which the spring loses loops (known counts,
-///   fewer after than before): an exact helix has force folds but never
-///   pops a loop;
+///   minimum-force fold, unless the loop count is known and the same at
+///   every point from the previous pop-out to the next fold pair: an exact
+///   helix has force folds but keeps its n loops, so it never pops one,
+///   while the rod's counts, undefined in its 3D excursions, never hide
+///   one;
 /// - a **stretch** is a piece of the curve between pop-outs, with the most
 ///   common known loop count of its points.
 #[derive(Debug, Clone, PartialEq)]
@@ -222,11 +224,11 @@ impl Response {
         let mut from = 0;
         for (i, &(max, min)) in pairs.iter().enumerate() {
             let until = pairs.get(i + 1).map_or(self.curve.len(), |p| p.0.index + 1);
-            let before = mode(&self.loops[from..=max.index.min(self.loops.len() - 1)]);
-            let after = mode(&self.loops[(min.index + 1).min(until)..until]);
-            if let (Some(b), Some(a)) = (before, after)
-                && a < b
-            {
+            let around = &self.loops[from.min(until)..until];
+            let kept_its_loops = around
+                .first()
+                .is_some_and(|first| first.is_some() && around.iter().all(|l| l == first));
+            if !kept_its_loops {
                 out.push(PopOut { max, min });
                 from = (min.index + 1).min(until);
             }
@@ -481,8 +483,11 @@ mod tests {
         assert!((pull.folds()[0].point.extension + 1.0).abs() < 1e-4);
         assert!((pull.folds()[0].point.force - 2.0).abs() < 1e-7);
         assert!((pull.folds()[1].point.extension - 1.0).abs() < 1e-4);
-        // Folds without a loop lost are no pop-out.
-        assert!(pull.pop_outs().is_empty());
+        // A fold pair is a pop-out unless the loop count is known and
+        // constant around it.
+        assert_eq!(pull.pop_outs().len(), 1);
+        let same = vec![Some(2); pull.curve().len()];
+        assert!(pull.with_loops(same).unwrap().pop_outs().is_empty());
     }
 
     #[test]

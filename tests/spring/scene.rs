@@ -143,11 +143,12 @@ fn loop_counts_never_exceed_the_coils_and_pop_outs_lose_loops() {
     let pull = RodModel::default().pull(&spring, 3.0).unwrap();
     assert!(pull.reached_target(), "{pull}");
     assert!(pull.loops().iter().flatten().all(|&l| l <= 3), "{pull}");
-    let stretches = pull.stretches();
-    for (a, b) in stretches.iter().zip(stretches.iter().skip(1)) {
-        assert!(b.loops < a.loops, "{stretches:?}");
-    }
-    assert_eq!(pull.loops_lost(), Some(pull.pop_outs().len() as i64));
+    // The known counts of the stretches fall with every pop-out, from the
+    // three coils at rest.
+    let known: Vec<u32> = pull.stretches().iter().filter_map(|s| s.loops).collect();
+    assert_eq!(known.first(), Some(&3), "{pull}");
+    assert!(known.windows(2).all(|w| w[1] < w[0]), "{known:?}");
+    assert!(!pull.pop_outs().is_empty(), "{pull}");
 }
 
 #[test]
