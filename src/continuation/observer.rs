@@ -151,7 +151,7 @@ impl<O: Observer> Observer for Every<O> {
     }
 
     fn point(&mut self, point: &Point) -> ControlFlow<()> {
-        let due = self.seen % self.n == 0;
+        let due = self.seen.is_multiple_of(self.n);
         self.seen += 1;
         if due || !matches!(point.kind(), PointKind::Regular) {
             self.inner.point(point)
