@@ -28,10 +28,10 @@ fn out_dir() -> PathBuf {
     let mut args = std::env::args().skip(1);
     let mut dir = PathBuf::from("target/hockle");
     while let Some(a) = args.next() {
-        if a == "--out" {
-            if let Some(d) = args.next() {
-                dir = PathBuf::from(d);
-            }
+        if a == "--out"
+            && let Some(d) = args.next()
+        {
+            dir = PathBuf::from(d);
         }
     }
     dir

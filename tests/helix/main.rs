@@ -161,11 +161,11 @@ proptest! {
                       a in any::<f64>(), b in any::<f64>(), c in any::<f64>(), nu in any::<f64>(),
                       samples in 0usize..5, zmax in any::<f64>()) {
         let _ = Stiffness::nikolai(a, nu);
-        if let Ok(s) = Stiffness::new(a, b, c) {
-            if let Ok(h) = Helix::new(n % 8, th0, s) {
-                let _ = (h.force(t), h.radius(t), h.energy(t), h.extension(t), h.spring_constant());
-                let _ = h.curve_to(samples, zmax);
-            }
+        if let Ok(s) = Stiffness::new(a, b, c)
+            && let Ok(h) = Helix::new(n % 8, th0, s)
+        {
+            let _ = (h.force(t), h.radius(t), h.energy(t), h.extension(t), h.spring_constant());
+            let _ = h.curve_to(samples, zmax);
         }
     }
 }
