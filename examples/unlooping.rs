@@ -51,7 +51,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let mut count = 0usize;
     let response = model.pull_observed(&spring, Target::Force(MAX_FORCE_SCALED), |p: &Point| {
         count += 1;
-        if count % 20 == 0 {
+        if count.is_multiple_of(20) {
             let f = p.parameter() / scale;
             let done = (f / MAX_FORCE_SCALED).clamp(0.0, 1.0);
             eprint!(
