@@ -26,11 +26,12 @@
 //! |---|---|
 //! | [`spring::Spring`] | a spring: coils, helix angle, stiffnesses |
 //! | [`spring::HelixModel`], [`spring::ElasticaModel`], [`spring::RodModel`] | three models of it, cheapest first; each answers [`spring::Model::pull`] |
-//! | [`spring::Response`] | a model's answer: the curve, folds, pop-outs, stretches, jumps |
+//! | [`spring::Response`] | a model's answer: the curve, folds, loop counts, pop-outs, stretches, jumps, the typed termination |
+//! | [`Target`], [`Control`], [`ForceScale`], [`Stiffness`] | the load, the force scale (2πn)²B and the stiffnesses A, B, C, defined once for every model |
 //! | [`ForceExtension`] | a force–extension curve, the one output type of every model |
 //! | [`elastica::Elastica`] | one planar equilibrium; [`elastica::Trace`] a whole branch |
 //! | [`helix::Helix`], [`Stiffness`] | the exact-helix response, and the stiffnesses A, B, C |
-//! | [`rod::Rod`], [`rod::Pull`] | the 3D rod as a boundary-value problem, and its pull driver |
+//! | [`rod::Rod`], [`rod::Pull`] | the 3D rod as a boundary-value problem, and its pull driver (run, or step by step) |
 //! | [`bvp::Problem`], [`bvp::Collocation`] | any two-point BVP, and the collocation solver |
 //! | [`continuation::Continuation`] | pseudo-arclength continuation of a [`bvp::Problem`] |
 //! | [`special::Modulus`], [`special::jacobi`] | elliptic modulus and Jacobi functions |
@@ -53,8 +54,11 @@
 //!   when pulling: F = dU/dΔz. The paper's elastica formulas (eq4 onwards)
 //!   write a constant that is twice this: from eq2/eq3 with B = 1 the energy
 //!   derivative gives F = k²Ω², not the printed 2k²Ω². Every `force()` in
-//!   hockle is the physical one; `force_scaled()` is F/(2πn)², the scale of
-//!   the paper's plots.
+//!   hockle is the physical one; `force_scaled()` is F/((2πn)²B), the
+//!   scale of the paper's plots ([`ForceScale`], B = 1 in the elastica).
+//! - **Load.** A pull ends at a [`Target`]: a force F/((2πn)²B) under force
+//!   control (dead load) or an extension Δz under extension control (hard
+//!   device); [`Control`] names which.
 //! - **Extension** Δz is the end-to-end distance along the force per unit
 //!   length, Δz ∈ [−1, 1].
 //! - **Modulus.** k is the modulus, m = k² the parameter, m₁ = 1 − m the

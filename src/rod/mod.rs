@@ -106,7 +106,7 @@
 //! [`Pull`] continues the solution from rest by pseudo-arclength in the
 //! controlled load (F_z, or Δz under [`Control::Extension`]); see the
 //! [`Pull`] docs for the norm, the step control and the fold location. The
-//! first steps must be small: within F/(2πn)² ≈ 0.004–0.01 the low-pitch
+//! first steps must be small: within F/((2πn)²B) ≈ 0.004–0.01 the low-pitch
 //! helix tilts its coils into a plane through the force axis at almost
 //! constant force (the paper's "turns and shears"); a parameter stepping in
 //! F jumps over that stretch onto a stiffer branch of tilted coils.

@@ -98,7 +98,7 @@ const SCAN: usize = 4096;
 /// exists for every finite force.
 ///
 /// The helix force need not be monotone (at θ0 = 89.8°, A/B = 10 it peaks
-/// at F/(2πn)² ≈ 0.66 near Δz ≈ 0.68): plain bisection on (0, θ0) could
+/// at F/((2πn)²B) ≈ 0.66 near Δz ≈ 0.68): plain bisection on (0, θ0) could
 /// return a later crossing.
 fn angle_at_force(helix: &Helix, force: f64) -> Result<f64> {
     let z0 = helix.theta0().cos();

@@ -8,7 +8,7 @@
 //! |---|---|---|
 //! | [`HelixModel`] | the spring stays an exact helix (the paper's Appendix) | microseconds |
 //! | [`ElasticaModel`] | the spring is flat, as between glass plates: the primary υ elastica | about a millisecond |
-//! | [`RodModel`] | the full 3D anisotropic rod, by collocation continuation | about a second |
+//! | [`RodModel`] | the full 3D anisotropic rod, by collocation continuation | about two seconds |
 //!
 //! What each costs in accuracy against the 3D rod is measured in
 //! `docs/ACCURACY.md` (section "spring").
@@ -20,7 +20,7 @@
 //! ```
 //! use hockle::spring::{HelixModel, Model, Spring};
 //! let spring = Spring::paper();
-//! let pull = HelixModel::default().pull(&spring, 0.5)?; // up to F/(2πn)² = 0.5
+//! let pull = HelixModel::default().pull(&spring, 0.5)?; // up to F/((2πn)²B) = 0.5
 //! let last = pull.curve().points().last().unwrap();
 //! assert!((last.force / spring.force_scale() - 0.5).abs() < 1e-9);
 //! assert!(pull.pop_outs().is_empty()); // below the helix's own force maximum
