@@ -94,7 +94,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     root.fill(&WHITE)?;
     let rows = root.split_evenly((2, cols));
     for (i, (label, e)) in shapes.iter().enumerate() {
-        let pts = e.centreline_samples(600);
+        let pts = e.centreline_samples(600)?;
         // The best plane through the z-axis: normal = smallest-moment
         // direction of (x, y).
         let mut m = Matrix2::zeros();

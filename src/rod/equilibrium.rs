@@ -154,16 +154,30 @@ impl Equilibrium {
         Ok(Vector3::new(y[0], y[1], y[2]))
     }
 
+    /// Largest `samples` of [`Self::centreline_samples`]: 10⁷ pieces
+    /// (240 MB of points), far beyond any plot, and an allocation a caller
+    /// can make.
+    pub const MAX_SAMPLES: usize = 10_000_000;
+
     /// The centreline at `samples + 1` equally spaced s ∈ [0, 1].
-    #[must_use]
-    pub fn centreline_samples(&self, samples: usize) -> Vec<Vector3<f64>> {
-        let samples = samples.max(1);
-        (0..=samples)
+    ///
+    /// # Errors
+    /// [`Error::InvalidCount`] unless 1 ≤ `samples` ≤
+    /// [`Self::MAX_SAMPLES`].
+    pub fn centreline_samples(&self, samples: usize) -> Result<Vec<Vector3<f64>>> {
+        if !(1..=Self::MAX_SAMPLES).contains(&samples) {
+            return Err(Error::InvalidCount {
+                name: "samples",
+                value: samples as u64,
+                allowed: "1 to 10⁷ pieces (Equilibrium::MAX_SAMPLES)",
+            });
+        }
+        Ok((0..=samples)
             .map(|j| {
                 let y = self.eval(j as f64 / samples as f64);
                 Vector3::new(y[0], y[1], y[2])
             })
-            .collect()
+            .collect())
     }
 
     /// The material frame at s as a unit quaternion: d_i = q e_i (the

@@ -179,3 +179,44 @@ fn equilibrium_rejects_foreign_solutions() {
         Err(Error::InvalidCount { .. })
     ));
 }
+
+#[test]
+fn huge_sample_counts_are_refused_not_allocated() {
+    let run = Pull::new(paper(), Target::Force(1e-3)).run(()).unwrap();
+    assert!(run.reached_target());
+    let start = Pull::new(paper(), Target::Force(1e-3)).start().unwrap();
+    let e = hockle::rod::Equilibrium::new(paper(), start.rest().clone()).unwrap();
+    for n in [0, usize::MAX, hockle::rod::Equilibrium::MAX_SAMPLES + 1] {
+        assert!(matches!(
+            e.centreline_samples(n),
+            Err(Error::InvalidCount { name: "samples", .. })
+        ));
+    }
+    assert_eq!(e.centreline_samples(4).unwrap().len(), 5);
+    // Mesh counts past the bvp's limit are refused before any work.
+    assert!(matches!(
+        Pull::new(paper(), Target::Force(1.0)).intervals(usize::MAX).run(()),
+        Err(Error::InvalidCount { .. })
+    ));
+}
+
+/// Every model, setting and result type can cross threads.
+#[test]
+fn rod_and_spring_types_are_send_and_sync() {
+    fn check<T: Send + Sync>() {}
+    check::<Rod>();
+    check::<Pull>();
+    check::<hockle::rod::PullRun>();
+    check::<hockle::rod::Start>();
+    check::<hockle::rod::Equilibrium>();
+    check::<hockle::spring::Spring>();
+    check::<hockle::spring::RodModel>();
+    check::<hockle::spring::HelixModel>();
+    check::<hockle::spring::ElasticaModel>();
+    check::<hockle::spring::Response>();
+    check::<hockle::Target>();
+    check::<hockle::ForceScale>();
+    check::<hockle::ForceExtension>();
+    check::<hockle::Stiffness>();
+    check::<hockle::Error>();
+}
