@@ -133,9 +133,9 @@ fn bad_settings_fail_before_any_work() {
             Err(e) => e,
         };
         assert_eq!(name_of(&e), name, "{what}: run gave {e}");
-        let e = cont.steps(&p, &s).err().expect("steps gave Ok");
+        let e = cont.steps(&p, &s).expect_err("steps gave Ok");
         assert_eq!(name_of(&e), name, "{what}: steps gave {e}");
-        let e = cont.distance(&s, &s).err().expect("distance gave Ok");
+        let e = cont.distance(&s, &s).expect_err("distance gave Ok");
         assert_eq!(name_of(&e), name, "{what}: distance gave {e}");
         assert_eq!(
             p.calls.load(Ordering::Relaxed),
@@ -154,8 +154,7 @@ fn the_error_says_what_was_given_and_what_is_allowed() {
     let e = Continuation::new(0)
         .locate_tolerance(-1e-10)
         .steps(&p, &s)
-        .err()
-        .expect("a negative tolerance");
+        .expect_err("a negative tolerance");
     assert_eq!(
         e,
         Error::InvalidArgument {
@@ -167,8 +166,7 @@ fn the_error_says_what_was_given_and_what_is_allowed() {
     let e = Continuation::new(0)
         .step_bounds(0.6, 0.5)
         .steps(&p, &s)
-        .err()
-        .expect("ds_min > ds_max");
+        .expect_err("ds_min > ds_max");
     assert!(e.to_string().contains("ds_max = 0.5"), "{e}");
 }
 

@@ -161,7 +161,6 @@ fn a_non_finite_event_is_a_typed_failure() {
     let e = Continuation::new(0)
         .stop_when(|_| f64::NAN)
         .steps(&Bratu::default(), &s0)
-        .err()
-        .expect("a NaN event at the start");
+        .expect_err("a NaN event at the start");
     assert!(matches!(e, Error::NonFinite { .. }), "{e}");
 }
