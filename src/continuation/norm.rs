@@ -109,7 +109,7 @@ impl Continuation {
     /// The distance ‖a − b‖ of two solutions in this continuation's norm
     /// (module docs: weights w_i, θ on the solver's free parameters and λ),
     /// integrals by the Gauss rule of the solver, so that it measures
-    /// arclength the way [`Point::arclength`](crate::continuation::Point::arclength) does (e.g. to join a point
+    /// arclength the way [`Point::arclength`](super::Point::arclength) does (e.g. to join a point
     /// computed before the run to the branch).
     ///
     /// # Errors

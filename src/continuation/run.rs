@@ -7,11 +7,15 @@ use super::{Continuation, Observer, Point, PointKind, Steps, Termination};
 use crate::bvp::{Problem, Solution};
 use crate::error::Result;
 
-/// The result of a run: every point in order and why it ended.
+/// The result of a run: every point in order, why it ended, and the work
+/// it took (the counts of [`Steps`] at its end).
 #[derive(Debug, Clone)]
 pub struct Run {
-    pub(super) points: Vec<Point>,
-    pub(super) termination: Termination,
+    points: Vec<Point>,
+    termination: Termination,
+    accepted: usize,
+    rejected: usize,
+    newton_iterations: u64,
 }
 
 impl Run {
@@ -48,6 +52,25 @@ impl Run {
     #[must_use]
     pub fn last(&self) -> Option<&Point> {
         self.points.last()
+    }
+
+    /// Accepted steps (as [`Steps::accepted`]).
+    #[must_use]
+    pub fn accepted(&self) -> usize {
+        self.accepted
+    }
+
+    /// Rejected (halved and retried) steps (as [`Steps::rejected`]).
+    #[must_use]
+    pub fn rejected(&self) -> usize {
+        self.rejected
+    }
+
+    /// Corrector iterations of every step and location (as
+    /// [`Steps::newton_iterations`]).
+    #[must_use]
+    pub fn newton_iterations(&self) -> u64 {
+        self.newton_iterations
     }
 }
 
@@ -140,5 +163,8 @@ pub(super) fn drive<P: Problem + ?Sized, O: Observer>(
     Run {
         points,
         termination,
+        accepted: steps.accepted,
+        rejected: steps.rejected,
+        newton_iterations: steps.newton_iterations,
     }
 }

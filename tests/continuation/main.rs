@@ -475,6 +475,10 @@ fn the_iterator_counts_steps_rejections_and_iterations() {
     let accepted: u64 = pts.iter().map(|q| u64::from(q.newton_iterations())).sum();
     assert!(trace.newton_iterations() >= accepted);
     assert!(trace.newton_iterations() > 0);
+    // The run reports the same counts.
+    assert_eq!(b.accepted(), trace.accepted());
+    assert_eq!(b.rejected(), trace.rejected());
+    assert_eq!(b.newton_iterations(), trace.newton_iterations());
 }
 
 #[test]

@@ -212,3 +212,15 @@ fn every_nth_point_keeps_the_start_the_special_points_and_each_nth() {
         .unwrap();
     assert_eq!(n0, all.len());
 }
+
+#[test]
+fn settings_results_and_adapters_are_send_and_sync() {
+    fn send_sync<T: Send + Sync>() {}
+    send_sync::<Continuation>();
+    send_sync::<Run>();
+    send_sync::<Point>();
+    send_sync::<PointKind>();
+    send_sync::<Termination>();
+    send_sync::<hockle::continuation::BranchSide>();
+    send_sync::<hockle::continuation::Every<Log>>();
+}
