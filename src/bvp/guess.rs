@@ -5,7 +5,7 @@ use super::solution::Solution;
 use super::system::State;
 use super::tableau::Tableau;
 
-/// A starting guess for [`Collocation::solve`](crate::bvp::Collocation::solve): a closure s ↦ y(s) (any
+/// A starting guess for [`Collocation::solve`](super::Collocation::solve): a closure s ↦ y(s) (any
 /// `Fn(f64) -> V` with `V: AsRef<[f64]>`, e.g. arrays, `Vec` or `DVector`),
 /// or a previous [`Solution`] (copied exactly when the mesh and m agree,
 /// otherwise evaluated through its collocation polynomial).

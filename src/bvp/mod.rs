@@ -41,6 +41,10 @@
 //! dense system in (y(0), y(1), free parameters) with the boundary and
 //! integral rows (the structure of AUTO-07p's `solvebv`). faer's sparse LU
 //! on the full system is kept as the reference ([`LinearSolver::SparseLu`]).
+//! With the `rayon` feature the per-interval work (Jacobian blocks,
+//! condensation, the condensed right-hand sides) runs on rayon's pool; the
+//! results are the same bit for bit as on one thread (docs/PERFORMANCE.md
+//! has the speed-up: 1.2–1.5× on two cores).
 //!
 //! With [`Collocation::tolerance`] the mesh is adapted: the error between
 //! mesh points behaves like C_m h^(m+1) |y^(m+1)|, so the mesh that

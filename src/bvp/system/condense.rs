@@ -83,14 +83,13 @@ struct Interval<'s> {
 }
 
 /// `v` cut into `count` consecutive pieces of length `len` (which may be 0).
-pub(super) fn pieces<T>(mut v: &mut [T], len: usize, count: usize) -> Vec<&mut [T]> {
-    let mut out = Vec::with_capacity(count);
-    for _ in 0..count {
-        let (head, tail) = v.split_at_mut(len);
-        out.push(head);
-        v = tail;
-    }
-    out
+pub(super) fn pieces<T>(v: &mut [T], len: usize, count: usize) -> impl Iterator<Item = &mut [T]> {
+    let mut rest = v;
+    (0..count).map(move |_| {
+        let (head, tail) = std::mem::take(&mut rest).split_at_mut(len);
+        rest = tail;
+        head
+    })
 }
 
 /// How many threads share `nn` intervals of about `flops` each: one below
@@ -338,7 +337,6 @@ impl<P: Problem + ?Sized> System<'_, P> {
             factor,
         };
         let mut intervals: Vec<Interval<'_>> = pieces(&mut self.wa, mn * wcols, nn)
-            .into_iter()
             .zip(pieces(&mut self.wpiv, mn, nn))
             .zip(pieces(&mut self.gam, n * n, nn))
             .zip(pieces(&mut self.pim, n * nq, nn))

@@ -12,6 +12,31 @@ fn fd_step(x: f64) -> f64 {
     6.055454452393343e-6 * x.abs().max(1.0)
 }
 
+/// Central differences of `eval` in the variables `cols` of `x`: entry r of
+/// (e(x + δ_c e_c) − e(x − δ_c e_c))/(2δ_c) goes to `store(r, c, ·)`
+/// (`plus`, `minus`: scratch of e's length; `x` is restored).
+fn central_differences(
+    x: &mut [f64],
+    cols: impl IntoIterator<Item = usize>,
+    plus: &mut [f64],
+    minus: &mut [f64],
+    mut eval: impl FnMut(&[f64], &mut [f64]),
+    mut store: impl FnMut(usize, usize, f64),
+) {
+    for c in cols {
+        let x0 = x[c];
+        let d = fd_step(x0);
+        x[c] = x0 + d;
+        eval(x, plus);
+        x[c] = x0 - d;
+        eval(x, minus);
+        x[c] = x0;
+        for (r, (a, b)) in plus.iter().zip(minus.iter()).enumerate() {
+            store(r, c, (a - b) / (2.0 * d));
+        }
+    }
+}
+
 /// ∂f/∂y, ∂f/∂p, ∂h/∂y, ∂h/∂p at one collocation point, with the scratch
 /// their differences need (one per thread of the condensation).
 pub(super) struct PointDerivatives {
@@ -58,31 +83,33 @@ impl PointDerivatives {
             return;
         }
         let n = y.len();
-        let (yb, pb) = (&mut self.ybuf, &mut self.pbuf);
-        yb[..n].copy_from_slice(y);
+        let (yb, pb) = (&mut self.ybuf[..n], &mut self.pbuf);
+        let (fp, fm) = (&mut self.fbuf[..n], &mut self.fbuf2[..n]);
+        yb.copy_from_slice(y);
         pb.copy_from_slice(p);
-        for c in 0..n {
-            let d = fd_step(y[c]);
-            yb[c] = y[c] + d;
-            problem.rhs(z, &yb[..n], p, &mut self.fbuf[..n]);
-            yb[c] = y[c] - d;
-            problem.rhs(z, &yb[..n], p, &mut self.fbuf2[..n]);
-            yb[c] = y[c];
-            for r in 0..n {
-                self.jac[(r, c)] = (self.fbuf[r] - self.fbuf2[r]) / (2.0 * d);
-            }
-        }
-        for &c in free {
-            let d = fd_step(p[c]);
-            pb[c] = p[c] + d;
-            problem.rhs(z, y, pb, &mut self.fbuf[..n]);
-            pb[c] = p[c] - d;
-            problem.rhs(z, y, pb, &mut self.fbuf2[..n]);
-            pb[c] = p[c];
-            for r in 0..n {
-                self.jacp[(r, c)] = (self.fbuf[r] - self.fbuf2[r]) / (2.0 * d);
-            }
-        }
+        let jac = &mut self.jac;
+        central_differences(
+            yb,
+            0..n,
+            fp,
+            fm,
+            |y, f| problem.rhs(z, y, p, f),
+            |r, c, v| {
+                jac[(r, c)] = v;
+            },
+        );
+        let jacp = &mut self.jacp;
+        let each = free.iter().copied();
+        central_differences(
+            pb,
+            each,
+            fp,
+            fm,
+            |p, f| problem.rhs(z, y, p, f),
+            |r, c, v| {
+                jacp[(r, c)] = v;
+            },
+        );
     }
 
     /// ∂h/∂y into `hy` and ∂h/∂p (free columns) into `hp` at (z, y, y_ref).
@@ -103,35 +130,23 @@ impl PointDerivatives {
             return;
         }
         let (n, ni) = (y.len(), nint);
-        let (yb, pb) = (&mut self.ybuf, &mut self.pbuf);
-        yb[..n].copy_from_slice(y);
+        let (yb, pb) = (&mut self.ybuf[..n], &mut self.pbuf);
+        let (hp, hm) = (&mut self.fbuf[..ni], &mut self.fbuf2[..ni]);
+        yb.copy_from_slice(y);
         pb.copy_from_slice(p);
-        for c in 0..n {
-            let d = fd_step(y[c]);
-            yb[c] = y[c] + d;
-            self.fbuf[..ni].fill(0.0);
-            problem.integrand(z, &yb[..n], yr, p, &mut self.fbuf[..ni]);
-            yb[c] = y[c] - d;
-            self.fbuf2[..ni].fill(0.0);
-            problem.integrand(z, &yb[..n], yr, p, &mut self.fbuf2[..ni]);
-            yb[c] = y[c];
-            for r in 0..ni {
-                self.hy[(r, c)] = (self.fbuf[r] - self.fbuf2[r]) / (2.0 * d);
-            }
-        }
-        for &c in free {
-            let d = fd_step(p[c]);
-            pb[c] = p[c] + d;
-            self.fbuf[..ni].fill(0.0);
-            problem.integrand(z, y, yr, pb, &mut self.fbuf[..ni]);
-            pb[c] = p[c] - d;
-            self.fbuf2[..ni].fill(0.0);
-            problem.integrand(z, y, yr, pb, &mut self.fbuf2[..ni]);
-            pb[c] = p[c];
-            for r in 0..ni {
-                self.hp[(r, c)] = (self.fbuf[r] - self.fbuf2[r]) / (2.0 * d);
-            }
-        }
+        let eval_y = |y: &[f64], h: &mut [f64]| {
+            h.fill(0.0);
+            problem.integrand(z, y, yr, p, h);
+        };
+        let dhdy = &mut self.hy;
+        central_differences(yb, 0..n, hp, hm, eval_y, |r, c, v| dhdy[(r, c)] = v);
+        let eval_p = |p: &[f64], h: &mut [f64]| {
+            h.fill(0.0);
+            problem.integrand(z, y, yr, p, h);
+        };
+        let dhdp = &mut self.hp;
+        let each = free.iter().copied();
+        central_differences(pb, each, hp, hm, eval_p, |r, c, v| dhdp[(r, c)] = v);
     }
 }
 
@@ -175,40 +190,30 @@ impl BoundaryDerivatives {
             return;
         }
         let (n, nb) = (y0.len(), self.g0.nrows());
-        let mut yb = vec![0.0; 2 * n];
-        yb[..n].copy_from_slice(y0);
-        yb[n..].copy_from_slice(y1);
+        let mut yb = [y0, y1].concat();
         let mut pb = p.to_vec();
-        let mut gplus = vec![0.0; nb];
-        let mut gminus = vec![0.0; nb];
-        for c in 0..2 * n {
-            let x = yb[c];
-            let d = fd_step(x);
-            yb[c] = x + d;
-            problem.boundary(&yb[..n], &yb[n..], p, &mut gplus);
-            yb[c] = x - d;
-            problem.boundary(&yb[..n], &yb[n..], p, &mut gminus);
-            yb[c] = x;
-            for r in 0..nb {
-                let v = (gplus[r] - gminus[r]) / (2.0 * d);
+        let (mut gplus, mut gminus) = (vec![0.0; nb], vec![0.0; nb]);
+        let (g0, g1) = (&mut self.g0, &mut self.g1);
+        let eval_y = |y: &[f64], g: &mut [f64]| problem.boundary(&y[..n], &y[n..], p, g);
+        central_differences(
+            &mut yb,
+            0..2 * n,
+            &mut gplus,
+            &mut gminus,
+            eval_y,
+            |r, c, v| {
                 if c < n {
-                    self.g0[(r, c)] = v;
+                    g0[(r, c)] = v;
                 } else {
-                    self.g1[(r, c - n)] = v;
+                    g1[(r, c - n)] = v;
                 }
-            }
-        }
-        for &c in free {
-            let x = pb[c];
-            let d = fd_step(x);
-            pb[c] = x + d;
-            problem.boundary(y0, y1, &pb, &mut gplus);
-            pb[c] = x - d;
-            problem.boundary(y0, y1, &pb, &mut gminus);
-            pb[c] = x;
-            for r in 0..nb {
-                self.gp[(r, c)] = (gplus[r] - gminus[r]) / (2.0 * d);
-            }
-        }
+            },
+        );
+        let gp = &mut self.gp;
+        let eval_p = |p: &[f64], g: &mut [f64]| problem.boundary(y0, y1, p, g);
+        let each = free.iter().copied();
+        central_differences(&mut pb, each, &mut gplus, &mut gminus, eval_p, |r, c, v| {
+            gp[(r, c)] = v;
+        });
     }
 }

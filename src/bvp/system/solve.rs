@@ -96,7 +96,6 @@ impl<P: Problem + ?Sized> System<'_, P> {
             wcols,
         };
         let mut intervals: Vec<_> = pieces(&mut self.kap, mn, nn)
-            .into_iter()
             .zip(pieces(&mut self.rho, n, nn))
             .zip(pieces(&mut self.kdense, nd, nn))
             .enumerate()
@@ -176,7 +175,7 @@ impl<P: Problem + ?Sized> System<'_, P> {
         }
         // 5. Stage derivatives dK_j = κ_j + G_j dY_j + Q_j dq.
         let (wa, kap, y) = (&self.wa, &self.kap, &out.y);
-        let mut intervals: Vec<_> = pieces(&mut out.k, mn, nn).into_iter().enumerate().collect();
+        let mut intervals: Vec<_> = pieces(&mut out.k, mn, nn).enumerate().collect();
         for_each_interval(&mut intervals, &mut self.work, groups, |it, _| {
             let (j, dk) = it;
             let j = *j;
