@@ -5,7 +5,7 @@ use core::f64::consts::PI;
 use nalgebra::Point2;
 
 use super::integrals::{SMALL_M, i_between, i_period};
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, check_points};
 use crate::special::{Jacobi, Modulus, ellip_e, ellip_e_inc, jacobi, jacobi_epsilon};
 
 /// The shape class of a solution (the paper's Greek letters).
@@ -379,15 +379,9 @@ impl Elastica {
     /// ```
     ///
     /// # Errors
-    /// [`Error::InvalidCount`] if `samples` < 2.
+    /// [`Error::InvalidCount`] if `samples` < 2 or > [`MAX_POINTS`](crate::error::MAX_POINTS).
     pub fn centreline(&self, samples: usize) -> Result<Vec<Point2<f64>>> {
-        if samples < 2 {
-            return Err(Error::InvalidCount {
-                name: "samples",
-                value: samples as u64,
-                allowed: "at least 2 points",
-            });
-        }
+        check_points("samples", samples)?;
         let j1 = jacobi(self.u1, self.modulus);
         let mut out = Vec::with_capacity(samples);
         let mut z = 0.0;

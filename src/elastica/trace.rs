@@ -7,8 +7,8 @@ use super::family::Family;
 use super::secondary::secondary_fold;
 use super::solution::{Arm, Branch, Elastica, check_j, check_n};
 use super::symmetric::primary;
-use crate::curve::{ForceExtension, ForcePoint};
-use crate::error::{Error, Result};
+use crate::curve::{ForceExtension, ForcePoint, force_scale};
+use crate::error::{Error, Result, check_points};
 use crate::special::Modulus;
 
 /// Traces elastica branches into [`ForceExtension`] curves.
@@ -87,13 +87,7 @@ impl Trace {
 
     fn check(&self, n: u32) -> Result<(u32, f64)> {
         check_n(n)?;
-        if self.points < 2 {
-            return Err(Error::InvalidCount {
-                name: "points",
-                value: self.points as u64,
-                allowed: "at least 2 points",
-            });
-        }
+        check_points("points", self.points)?;
         if !(self.max_force_scaled.is_finite() && self.max_force_scaled > 0.0) {
             return Err(Error::InvalidArgument {
                 name: "max_force_scaled",
@@ -103,8 +97,7 @@ impl Trace {
         }
         let sc = self.scale_coils.unwrap_or(n);
         check_n(sc)?;
-        let s = 2.0 * core::f64::consts::PI * f64::from(sc);
-        Ok((sc, self.max_force_scaled * s * s))
+        Ok((sc, force_scale(sc)))
     }
 
     /// The branch `branch` of an n-coil rod from where it starts (the ring
@@ -112,16 +105,17 @@ impl Trace {
     /// a secondary arm) up to the force limit.
     ///
     /// # Errors
-    /// [`Error::InvalidCount`] for n = 0, j = 0, `points` < 2 or
+    /// [`Error::InvalidCount`] for n = 0, j = 0, `points` < 2 or > [`MAX_POINTS`](crate::error::MAX_POINTS), or
     /// `scale_coils` = 0; [`Error::InvalidArgument`] for a bad force limit or
     /// one at or below the branch's starting force;
     /// [`Error::SecondaryNeedsOtherPeriods`] for a secondary branch with
     /// j = n.
     pub fn run(&self, n: u32, branch: Branch) -> Result<ForceExtension> {
-        let (sc, fmax) = self.check(n)?;
+        let (sc, scale) = self.check(n)?;
+        let limit = self.max_force_scaled;
         let path = Path::new(n, branch)?;
         let mut curve = ForceExtension::new(format!("{branch}, n = {n}"), "k", sc)?;
-        curve.extend(path.sample(fmax, self.points, self.max_force_scaled)?);
+        curve.extend(path.sample(limit, scale, self.points)?);
         Ok(curve)
     }
 
@@ -133,13 +127,14 @@ impl Trace {
     /// # Errors
     /// As [`Trace::run`].
     pub fn secondary(&self, n: u32, j: u32) -> Result<ForceExtension> {
-        let (sc, fmax) = self.check(n)?;
+        let (sc, scale) = self.check(n)?;
+        let limit = self.max_force_scaled;
         check_j(j)?;
         let lower = Path::new(n, Branch::Secondary { j, arm: Arm::Lower })?;
         let upper = Path::new(n, Branch::Secondary { j, arm: Arm::Upper })?;
         let half = self.points / 2;
-        let mut a = lower.sample(fmax, half.max(2), self.max_force_scaled)?;
-        let b = upper.sample(fmax, (self.points - half).max(2), self.max_force_scaled)?;
+        let mut a = lower.sample(limit, scale, half.max(2))?;
+        let b = upper.sample(limit, scale, (self.points - half).max(2))?;
         a.reverse();
         let mut curve = ForceExtension::new(format!("secondary j = {j}, n = {n}"), "k", sc)?;
         curve.extend(a);
@@ -208,8 +203,9 @@ impl Path {
         self.q0 + (q_end - self.q0) * s
     }
 
-    /// The parameter q where the force reaches `fmax`.
-    fn q_end(&self, fmax: f64, limit_scaled: f64) -> Result<f64> {
+    /// The parameter q where the force reaches `limit_scaled`·`scale`.
+    fn q_end(&self, limit_scaled: f64, scale: f64) -> Result<f64> {
+        let fmax = limit_scaled * scale;
         let start = self.at_q(self.q0)?;
         if start.force() >= fmax {
             return Err(Error::InvalidArgument {
@@ -221,12 +217,15 @@ impl Path {
         let mut lo = self.q0;
         let mut hi = (self.q0 + 1.0).max(2.0 * self.q0);
         while self.at_q(hi)?.force() < fmax {
-            lo = hi;
-            hi *= 2.0;
             if hi >= Q_MAX {
-                hi = Q_MAX;
-                break;
+                let end = self.at_q(Q_MAX)?;
+                return Err(Error::ForceOutOfReach {
+                    requested: limit_scaled,
+                    reachable: end.force() / scale,
+                });
             }
+            lo = hi;
+            hi = (2.0 * hi).min(Q_MAX);
         }
         for _ in 0..60 {
             let mid = 0.5 * (lo + hi);
@@ -239,8 +238,8 @@ impl Path {
         Ok(hi)
     }
 
-    fn sample(&self, fmax: f64, points: usize, limit_scaled: f64) -> Result<Vec<ForcePoint>> {
-        let q_end = self.q_end(fmax, limit_scaled)?;
+    fn sample(&self, limit_scaled: f64, scale: f64, points: usize) -> Result<Vec<ForcePoint>> {
+        let q_end = self.q_end(limit_scaled, scale)?;
         let eval = |sigma: f64| -> Result<ForcePoint> {
             let e = self.at_q(self.q_of(sigma, q_end))?;
             Ok(ForcePoint {
