@@ -49,6 +49,10 @@ impl Default for Trace {
     }
 }
 
+/// The last point of a trace meets the force limit to this relative
+/// tolerance, or the trace is an error.
+const END_TOLERANCE: f64 = 1e-9;
+
 /// Largest q = ln(1/m₁) followed (m₁ ≈ 1e-300).
 const Q_MAX: f64 = 690.0;
 
@@ -181,7 +185,13 @@ impl Path {
     }
 
     fn at_q(&self, q: f64) -> Result<Elastica> {
-        let md = Modulus::from_complement((-q).exp())?;
+        // m = 1 − e^−q from expm1 while it is small: forces down to
+        // F ∝ q ≈ 1e-300 stay resolved
+        let md = if q < core::f64::consts::LN_2 {
+            Modulus::from_m(-(-q).exp_m1())?
+        } else {
+            Modulus::from_complement((-q).exp())?
+        };
         match self.branch {
             Branch::Upsilon => Ok(primary(self.n, md, Family::Upsilon)),
             Branch::Alpha => Ok(primary(self.n, md, Family::Alpha)),
@@ -227,13 +237,27 @@ impl Path {
             lo = hi;
             hi = (2.0 * hi).min(Q_MAX);
         }
-        for _ in 0..60 {
+        // to the resolution of q (from [0, 1] that is ~1100 halvings for a
+        // limit of 1e-300, 60 near 1)
+        for _ in 0..1200 {
             let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
             if self.at_q(mid)?.force() < fmax {
                 lo = mid;
             } else {
                 hi = mid;
             }
+        }
+        let reached = self.at_q(hi)?.force();
+        let miss = (reached / fmax - 1.0).abs();
+        if miss.is_nan() || miss > END_TOLERANCE {
+            return Err(Error::InvalidArgument {
+                name: "max_force_scaled",
+                value: limit_scaled,
+                allowed: "a limit the branch meets to 1e-9 in double precision (a modulus m = 1 - e^-q above the subnormal range)",
+            });
         }
         Ok(hi)
     }

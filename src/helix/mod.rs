@@ -539,3 +539,11 @@ impl core::fmt::Display for Helix {
         )
     }
 }
+
+// Every model, setting and result type of this layer can cross threads.
+const _: fn() = || {
+    fn send_sync<T: Send + Sync>() {}
+    send_sync::<Helix>();
+    send_sync::<Stiffness>();
+    send_sync::<ForceExtension>();
+};

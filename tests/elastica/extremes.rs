@@ -159,3 +159,63 @@ fn huge_counts_are_refused_before_any_work() {
         ));
     }
 }
+
+/// Before: the bisection stopped at 2⁻⁶⁰ in q and m = 1 − e^−q rounded to 0
+/// below q ≈ 1e-16, so a limit of 1e-100 returned Ok with a last point at
+/// F/(2πn)² ≈ 3e-17. Now every limit down to 1e-300 is met (to the trace's
+/// 1e-9) and a limit below the double range of m is refused.
+#[test]
+fn tiny_force_limits_are_met_or_refused() {
+    for limit in [1e-10, 1e-100, 1e-280, 1e-300] {
+        for branch in [Branch::Upsilon, Branch::Alpha, Branch::Theta { j: 4 }] {
+            let c = Trace::new()
+                .points(10)
+                .max_force_scaled(limit)
+                .run(4, branch)
+                .unwrap();
+            let last = c.force_scaled(9).unwrap();
+            assert!(
+                rel_err(last, limit) < 1e-9,
+                "{branch}: {last:e} for {limit:e}"
+            );
+        }
+    }
+    assert!(matches!(
+        Trace::new()
+            .points(10)
+            .max_force_scaled(1e-320)
+            .run(4, Branch::Upsilon),
+        Err(Error::InvalidArgument {
+            name: "max_force_scaled",
+            ..
+        })
+    ));
+}
+
+/// Before: the centreline integrated z over every one of the Ω/(2K) periods
+/// (capped at 2²⁰ pieces per sample: minutes for n = 2³⁰, and the cap left
+/// the end 2e-8 off). Now whole periods are one period's integral times
+/// their number. Reference: the closed-form extension (eq5, evaluated
+/// without quadrature): the end of the centreline is (0, Δz). Each of the
+/// 99 segments and the period integral are accurate to a few ε absolute
+/// (|z′| ≤ 1), measured ≤ 1.3e-15; 1e-14 allows for them.
+#[test]
+fn centrelines_of_rods_with_a_billion_coils() {
+    const END_TOL: f64 = 1e-14;
+    for n in [1 << 20, 1 << 30, u32::MAX] {
+        for k in [1e-3, 0.5, 0.99] {
+            let s = Elastica::symmetric(n, k).unwrap();
+            for e in [s.upsilon, s.alpha] {
+                let c = e.centreline(100).unwrap();
+                let end = c[99];
+                assert!(end.x.abs() < END_TOL, "{e}: x = {:e}", end.x);
+                assert!(
+                    (end.y - e.extension()).abs() < END_TOL,
+                    "{e}: {:e}",
+                    end.y - e.extension()
+                );
+                assert!(e.energy().is_finite());
+            }
+        }
+    }
+}
