@@ -123,7 +123,9 @@ impl Elastica {
     /// [`Error::InvalidCount`] for n = 0 or j = 0;
     /// [`Error::SecondaryNeedsOtherPeriods`] for j = n;
     /// [`Error::InvalidModulus`] / [`Error::ModulusNotBelowOne`] for k outside
-    /// [0, 1); [`Error::BelowFold`] for k below the fold.
+    /// [0, 1); [`Error::BelowFold`] for k below the fold;
+    /// [`Error::FoldNotFound`] if the fold cannot be located in double
+    /// precision (not seen for n ≤ 50, j < 2³²).
     ///
     /// # Example
     /// ```
@@ -168,7 +170,8 @@ impl Elastica {
 /// evaluations of the extremum, so ~0.3 ms.
 ///
 /// # Errors
-/// As [`bifurcation`].
+/// As [`bifurcation`]; [`Error::FoldNotFound`] if rounding hides the branch
+/// near its bifurcation point (not seen for n ≤ 50, j < 2³²).
 ///
 /// # Example
 /// ```

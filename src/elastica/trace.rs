@@ -224,18 +224,20 @@ impl Path {
                 allowed: "a limit above the force where the branch starts",
             });
         }
+        // followed to m₁ = e^−690, or no further than its start when a
+        // branch begins beyond (a bifurcation with n/j near 222)
+        let cap = Q_MAX.max(self.q0);
         let mut lo = self.q0;
-        let mut hi = (self.q0 + 1.0).max(2.0 * self.q0);
+        let mut hi = (self.q0 + 1.0).max(2.0 * self.q0).min(cap);
         while self.at_q(hi)?.force() < fmax {
-            if hi >= Q_MAX {
-                let end = self.at_q(Q_MAX)?;
+            if hi >= cap {
                 return Err(Error::ForceOutOfReach {
                     requested: limit_scaled,
-                    reachable: end.force() / scale,
+                    reachable: self.at_q(cap)?.force() / scale,
                 });
             }
             lo = hi;
-            hi = (2.0 * hi).min(Q_MAX);
+            hi = (2.0 * hi).min(cap);
         }
         // to the resolution of q (from [0, 1] that is ~1100 halvings for a
         // limit of 1e-300, 60 near 1)

@@ -516,7 +516,9 @@ impl Helix {
                 self.theta0
             } else {
                 let t = i as f64 / (samples - 1) as f64;
-                (z0 + t * (max_extension - z0)).acos()
+                // z0 + (zmax − z0) can round above zmax (to 1 for
+                // zmax = 1 − 2⁻⁵³, where θ = 0 is not a helix)
+                (z0 + t * (max_extension - z0)).min(max_extension).acos()
             };
             curve.push(ForcePoint {
                 extension: theta.cos(),

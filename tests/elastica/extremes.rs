@@ -219,3 +219,39 @@ fn centrelines_of_rods_with_a_billion_coils() {
         }
     }
 }
+
+/// Found by the fuzz suite: branches that start at m₁ below e^−690 (ϑ_j and
+/// secondary branches with n/j near 222) doubled q past the double range
+/// and failed with "k = 1 is not allowed". Now they are traced or refused
+/// with their reach.
+#[test]
+fn branches_starting_near_the_end_of_the_double_range() {
+    for (n, branch) in [
+        (1000, Branch::Theta { j: 5 }),
+        (222, Branch::Theta { j: 1 }),
+        (
+            221,
+            Branch::Secondary {
+                j: 1,
+                arm: Arm::Upper,
+            },
+        ),
+        (
+            1000,
+            Branch::Secondary {
+                j: 5,
+                arm: Arm::Lower,
+            },
+        ),
+    ] {
+        match Trace::new()
+            .points(10)
+            .max_force_scaled(20.0)
+            .run(n, branch)
+        {
+            Ok(c) => assert!(rel_err(c.force_scaled(9).unwrap(), 20.0) < 1e-9),
+            Err(Error::ForceOutOfReach { reachable, .. }) => assert!(reachable < 20.0),
+            Err(e) => panic!("{n} {branch}: {e}"),
+        }
+    }
+}

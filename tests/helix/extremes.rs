@@ -139,3 +139,24 @@ fn nikolai_at_the_ends_of_the_double_range() {
     let s = Stiffness::nikolai(1e-300, 0.0).unwrap();
     assert!(rel_err(s.c(), 2e-300) < 2.0 * f64::EPSILON);
 }
+
+/// Found by the fuzz suite: `curve_to(n, 1 − 2⁻⁵³)` rounded its last
+/// extension to 1 and failed with "theta = 0 is not allowed". The last point
+/// is now at the requested extension (θ ≈ 1.5e-8), or the force there is an
+/// overflow.
+#[test]
+fn curve_to_the_last_double_below_one() {
+    let zmax = 1.0 - f64::EPSILON / 2.0;
+    for (th0, s) in [
+        (1.0, Stiffness::new(3.14, 1.0, 1.01).unwrap()),
+        (1.4, Stiffness::new(1e-200, 1e3, 1e-77).unwrap()),
+    ] {
+        let h = Helix::new(5, th0, s).unwrap();
+        for samples in [2, 15, 100] {
+            let c = h.curve_to(samples, zmax).unwrap();
+            let last = c.points()[samples - 1];
+            assert!(last.parameter > 0.0 && last.force.is_finite());
+            assert!(last.extension <= zmax);
+        }
+    }
+}
