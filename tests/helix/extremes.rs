@@ -148,7 +148,7 @@ fn nikolai_at_the_ends_of_the_double_range() {
 fn curve_to_the_last_double_below_one() {
     let zmax = 1.0 - f64::EPSILON / 2.0;
     for (th0, s) in [
-        (1.0, Stiffness::new(3.14, 1.0, 1.01).unwrap()),
+        (1.0, Stiffness::new(3.0, 1.0, 1.01).unwrap()),
         (1.4, Stiffness::new(1e-200, 1e3, 1e-77).unwrap()),
     ] {
         let h = Helix::new(5, th0, s).unwrap();
