@@ -126,19 +126,28 @@ impl Trace {
     /// The whole secondary branch j of an n-coil rod as one curve: the
     /// lower arm from the force limit down to the fold, then the upper arm
     /// back up (the parameter k therefore first decreases, then increases).
-    /// `points` is shared between the arms.
+    /// `points` (at least 3) is shared between the arms; the curve has
+    /// exactly `points` points (before issue 10 it had one fewer).
     ///
     /// # Errors
-    /// As [`Trace::run`].
+    /// As [`Trace::run`]; [`Error::InvalidCount`] for `points` < 3.
     pub fn secondary(&self, n: u32, j: u32) -> Result<ForceExtension> {
         let (sc, scale) = self.check(n)?;
         let limit = self.max_force_scaled;
         check_j(j)?;
         let lower = Path::new(n, Branch::Secondary { j, arm: Arm::Lower })?;
         let upper = Path::new(n, Branch::Secondary { j, arm: Arm::Upper })?;
-        let half = self.points / 2;
-        let mut a = lower.sample(limit, scale, half.max(2))?;
-        let b = upper.sample(limit, scale, (self.points - half).max(2))?;
+        if self.points < 3 {
+            return Err(Error::InvalidCount {
+                name: "points",
+                value: self.points as u64,
+                allowed: "at least 3 points for a whole secondary branch (both ends and the fold)",
+            });
+        }
+        // the fold is the last point of one arm and the first of the other
+        let lower_points = self.points.div_ceil(2);
+        let mut a = lower.sample(limit, scale, lower_points)?;
+        let b = upper.sample(limit, scale, self.points + 1 - lower_points)?;
         a.reverse();
         let mut curve = ForceExtension::new(format!("secondary j = {j}, n = {n}"), "k", sc)?;
         curve.extend(a);

@@ -255,3 +255,25 @@ fn branches_starting_near_the_end_of_the_double_range() {
         }
     }
 }
+
+/// Found while writing the fuzz oracle: `Trace::secondary` returned one point
+/// fewer than asked (the fold was counted on both arms), and 3 for 2.
+#[test]
+fn a_whole_secondary_branch_has_the_points_asked_for() {
+    for points in [3, 4, 5, 10, 101] {
+        let c = Trace::new()
+            .points(points)
+            .max_force_scaled(2.0)
+            .secondary(4, 3)
+            .unwrap();
+        assert_eq!(c.len(), points);
+    }
+    assert!(matches!(
+        Trace::new().points(2).secondary(4, 3),
+        Err(Error::InvalidCount {
+            name: "points",
+            value: 2,
+            ..
+        })
+    ));
+}

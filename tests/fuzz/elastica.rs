@@ -284,14 +284,23 @@ fn trace(g: &mut Gen, r: &mut Report) {
     }
     let what = || {
         format!(
-            "Trace(points = {points}, limit = {limit:e}, scale = {scale:?}).run({n}, {branch:?})"
+            "Trace(points = {points}, limit = {limit:e}, scale = {scale:?}).run({n}, {branch:?}) (or .secondary)"
         )
     };
-    let Some(res) = r.call(what, || t.run(n, branch)) else {
+    // the whole secondary branch j half the time
+    let whole = matches!(branch, Branch::Secondary { .. }) && g.u64() & 1 == 0;
+    let Some(res) = r.call(what, || {
+        if whole {
+            t.secondary(n, j)
+        } else {
+            t.run(n, branch)
+        }
+    }) else {
         return;
     };
+    let min_points = if whole { 3 } else { 2 };
     let valid = n >= 1
-        && (2..=MAX_POINTS).contains(&points)
+        && (min_points..=MAX_POINTS).contains(&points)
         && limit.is_finite()
         && limit > 0.0
         && scale != Some(0);
