@@ -147,11 +147,22 @@ fn nikolai_at_the_ends_of_the_double_range() {
 #[test]
 fn curve_to_the_last_double_below_one() {
     let zmax = 1.0 - f64::EPSILON / 2.0;
-    for (th0, s) in [
-        (1.0, Stiffness::new(3.0, 1.0, 1.01).unwrap()),
-        (1.4, Stiffness::new(1e-200, 1e3, 1e-77).unwrap()),
+    // angles from the fuzz failures (they fail at 73eae45 for every count)
+    for (th0_deg, s) in [
+        (
+            67.117_430_803_161_04_f64,
+            Stiffness::new(3.0, 1.0, 1.01).unwrap(),
+        ),
+        (
+            61.004_308_461_792_085,
+            Stiffness::new(1e3, 1e3, 853.5).unwrap(),
+        ),
+        (
+            81.679_417_523_746_92,
+            Stiffness::new(1e-200, 1e3, 1e-77).unwrap(),
+        ),
     ] {
-        let h = Helix::new(5, th0, s).unwrap();
+        let h = Helix::new(5, th0_deg.to_radians(), s).unwrap();
         for samples in [2, 15, 100] {
             let c = h.curve_to(samples, zmax).unwrap();
             let last = c.points()[samples - 1];
