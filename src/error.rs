@@ -4,6 +4,25 @@
 //! Each layer owns a group of variants below; add new ones to your layer's
 //! group so the groups stay apart.
 
+/// The largest number of points, samples or intervals any entry of hockle
+/// computes in one call (2²², about 4.2 million): larger counts are refused
+/// with [`Error::InvalidCount`] before anything is allocated, so a mistaken
+/// `usize::MAX` costs an error, not an allocation abort or an hour of work.
+pub const MAX_POINTS: usize = 1 << 22;
+
+/// Checks a count of points or samples: from 2 to [`MAX_POINTS`].
+pub(crate) fn check_points(name: &'static str, value: usize) -> Result<usize> {
+    if (2..=MAX_POINTS).contains(&value) {
+        Ok(value)
+    } else {
+        Err(Error::InvalidCount {
+            name,
+            value: value as u64,
+            allowed: "from 2 to MAX_POINTS = 2^22 = 4194304 points",
+        })
+    }
+}
+
 /// Result alias used throughout hockle.
 pub type Result<T, E = Error> = core::result::Result<T, E>;
 
@@ -77,6 +96,41 @@ pub enum Error {
         k: f64,
         /// The modulus of the fold, where the branch begins.
         fold: f64,
+    },
+    /// The fold of a secondary branch could not be located in double
+    /// precision: near its bifurcation point the branch's extremum stays
+    /// equal to πn up to rounding (not seen for any n ≤ 50, j < 2³²).
+    #[error(
+        "the fold of secondary branch j = {j} for n = {n} coils cannot be located in double precision: \
+         rounding hides the branch near its bifurcation point"
+    )]
+    FoldNotFound {
+        /// Coils.
+        n: u32,
+        /// Periods of the ϑ-branch the branch bifurcates from.
+        j: u32,
+    },
+    /// An elastica branch traced to a force beyond what it reaches with a
+    /// representable modulus.
+    #[error(
+        "max_force_scaled = {requested} is beyond the branch's reach: it is followed up to \
+         m1 = 1 - k^2 = e^-690 (about 1e-300), where F/(2πn)^2 = {reachable}"
+    )]
+    ForceOutOfReach {
+        /// The scaled force limit asked for.
+        requested: f64,
+        /// The largest scaled force on the branch (at m₁ = e^−690).
+        reachable: f64,
+    },
+    /// The result exists but is beyond the largest double.
+    #[error("the {quantity} at {name} = {value} is beyond the largest double (about 1.8e308)")]
+    Overflow {
+        /// What was asked for ("force", "spring constant", …).
+        quantity: &'static str,
+        /// The argument it was asked at.
+        name: &'static str,
+        /// The argument's value.
+        value: f64,
     },
     // ----- bvp -----------------------------------------------------------
     /// The problem's counts do not give a square system.

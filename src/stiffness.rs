@@ -85,7 +85,8 @@ impl Stiffness {
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] if `a_over_b` is not finite and positive or
-    /// ν is not in (−1, 0.5].
+    /// ν is not in (−1, 0.5]. Every A/B up to `f64::MAX` is accepted (C is
+    /// computed as 2/((1 + ν)(1 + B/A)) for A > B, without overflow).
     ///
     /// ```
     /// let s = hockle::Stiffness::nikolai(10.0, 0.05)?;
@@ -107,7 +108,22 @@ impl Stiffness {
                 allowed: "a Poisson ratio in (-1, 0.5]",
             });
         }
-        let c = 2.0 * a_over_b / ((1.0 + nu) * (a_over_b + 1.0));
+        // 2A/(A + 1) written so that neither A + 1 nor 2A overflows
+        let ratio = if a_over_b <= 1.0 {
+            2.0 * a_over_b / (1.0 + a_over_b)
+        } else {
+            2.0 / (1.0 + 1.0 / a_over_b)
+        };
+        let c = ratio / (1.0 + nu);
+        if !(c.is_finite() && c > 0.0) {
+            // not reached for A/B in (0, f64::MAX] and ν in (−1, ½]; kept so
+            // that a failure names the user's arguments, not C
+            return Err(Error::InvalidArgument {
+                name: "a_over_b",
+                value: a_over_b,
+                allowed: "a ratio A/B whose Nikolai C is a finite positive double",
+            });
+        }
         Self::new(a_over_b, 1.0, c)
     }
 

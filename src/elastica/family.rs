@@ -123,14 +123,17 @@ impl Member {
                 )
             }
             Family::Alpha => {
-                let nd = 1.0 / dn;
-                let n1 = m * sn * cn * nd * nd;
-                let n2 =
-                    m * ((cn * cn - sn * sn) * nd + 2.0 * m * sn * sn * cn * cn * nd * nd * nd);
+                // near t = K, cn and dn are O(k'): for k' ≈ 1e-162 (m₁
+                // subnormal) their products underflow, so everything is
+                // written with the O(1) ratios k' nd and cd = cn/dn
+                let kn = self.kp / dn;
+                let cd = cn / dn;
                 (
-                    ex - om * m * cn * cn / (dn * (self.kp + dn)),
-                    self.kp * (2.0 * nd + om * n1),
-                    self.kp * (4.0 * n1 + om * n2),
+                    ex - om * m * cd * (cn / (self.kp + dn)),
+                    kn * (2.0 + om * m * sn * cd),
+                    m * kn
+                        * (4.0 * sn * cd
+                            + om * ((cn * cn - sn * sn) + 2.0 * m * sn * sn * cd * cd)),
                 )
             }
         }

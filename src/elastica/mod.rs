@@ -121,3 +121,16 @@ pub use secondary::{Fold, secondary_fold};
 pub use solution::{Arm, Branch, Elastica, Shape};
 pub use symmetric::Symmetric;
 pub use trace::Trace;
+
+// Every model, setting and result type of this layer can cross threads.
+const _: fn() = || {
+    fn send_sync<T: Send + Sync>() {}
+    send_sync::<Elastica>();
+    send_sync::<Symmetric>();
+    send_sync::<Bifurcation>();
+    send_sync::<Fold>();
+    send_sync::<Trace>();
+    send_sync::<Arm>();
+    send_sync::<Branch>();
+    send_sync::<Shape>();
+};

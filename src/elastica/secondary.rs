@@ -123,7 +123,9 @@ impl Elastica {
     /// [`Error::InvalidCount`] for n = 0 or j = 0;
     /// [`Error::SecondaryNeedsOtherPeriods`] for j = n;
     /// [`Error::InvalidModulus`] / [`Error::ModulusNotBelowOne`] for k outside
-    /// [0, 1); [`Error::BelowFold`] for k below the fold.
+    /// [0, 1); [`Error::BelowFold`] for k below the fold;
+    /// [`Error::FoldNotFound`] if the fold cannot be located in double
+    /// precision (not seen for n ≤ 50, j < 2³²).
     ///
     /// # Example
     /// ```
@@ -153,7 +155,7 @@ impl Elastica {
                 n,
                 j,
                 k: modulus.k(),
-                fold: secondary_fold(n, j)?.modulus(),
+                fold: fold_modulus(n, j)?.k(),
             }),
         }
     }
@@ -168,7 +170,8 @@ impl Elastica {
 /// evaluations of the extremum, so ~0.3 ms.
 ///
 /// # Errors
-/// As [`bifurcation`].
+/// As [`bifurcation`]; [`Error::FoldNotFound`] if rounding hides the branch
+/// near its bifurcation point (not seen for n ≤ 50, j < 2³²).
 ///
 /// # Example
 /// ```
@@ -179,13 +182,38 @@ impl Elastica {
 /// # Ok::<(), hockle::Error>(())
 /// ```
 pub fn secondary_fold(n: u32, j: u32) -> Result<Fold> {
+    let modulus = fold_modulus(n, j)?;
+    // `fold_modulus` checked that the branch exists there; rounding in the
+    // arm's own solve is the only way to miss it
+    let solution =
+        solve_arm(n, j, Arm::bifurcating(n, j), modulus).ok_or(Error::FoldNotFound { n, j })?;
+    Ok(Fold { solution })
+}
+
+/// The modulus of the fold (see [`secondary_fold`]): the last modulus of a
+/// bisection in ln m₁ at which the branch exists. Never calls the arm
+/// solver, so [`Elastica::secondary_arm`] can report the fold in its error.
+fn fold_modulus(n: u32, j: u32) -> Result<Modulus> {
     check_secondary(n, j)?;
     let b = bifurcation(n, j)?;
     let exists = |x: f64| -> Result<bool> {
         let modulus = check_modulus(Modulus::from_complement(x.exp())?)?;
         Ok(extremum_beyond(&setup(n, j, modulus)).is_some())
     };
-    let mut lo = b.elliptic_modulus().complement().ln(); // exists
+    // The branch passes through the bifurcation point, but there (and at the
+    // fold) its extremum equals πn up to rounding: for j ≫ n the test is a
+    // coin flip. Start a little beyond the bifurcation (larger k), where the
+    // branch exists robustly; give up after a 1 % step in ln m₁.
+    let x_b = b.elliptic_modulus().complement().ln();
+    let mut lo = x_b;
+    let mut shift = 1e-12;
+    while !exists(lo)? {
+        if shift > 1e-2 {
+            return Err(Error::FoldNotFound { n, j });
+        }
+        lo = x_b * (1.0 + shift);
+        shift *= 10.0;
+    }
     let mut hi = lo;
     // walk towards k = 0 (x → 0) until the branch no longer exists
     loop {
@@ -210,7 +238,5 @@ pub fn secondary_fold(n: u32, j: u32) -> Result<Fold> {
             hi = mid;
         }
     }
-    let modulus = check_modulus(Modulus::from_complement(lo.exp())?)?;
-    let solution = Elastica::secondary_arm(n, j, Arm::bifurcating(n, j), modulus)?;
-    Ok(Fold { solution })
+    check_modulus(Modulus::from_complement(lo.exp())?)
 }

@@ -5,7 +5,7 @@ use core::f64::consts::PI;
 use nalgebra::Point2;
 
 use super::integrals::{SMALL_M, i_between, i_period};
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, check_points};
 use crate::quadrature::gauss_legendre;
 use crate::special::{Jacobi, Modulus, ellip_e, ellip_e_inc, jacobi, jacobi_epsilon};
 
@@ -287,7 +287,9 @@ impl Elastica {
     }
 
     /// Curvature κ(s) = 2Ω dn(u1 + Ωs, k) at s ∈ [0, 1] measured from the
-    /// rod's start (any real s is evaluated on the periodic extension).
+    /// rod's start (any real s is evaluated on the periodic extension; NaN
+    /// for a non-finite s or one where Ωs overflows, as in
+    /// [`jacobi`](crate::special::jacobi)).
     ///
     /// ```
     /// let e = hockle::elastica::Elastica::symmetric(1, 0.9)?.upsilon;
@@ -348,7 +350,7 @@ impl Elastica {
                 let v = ex - om * m * s * s / (1.0 + d);
                 v * v / d
             };
-            return 2.0 / om * gauss_legendre(f, phi1, phi2, PI / 16.0);
+            return 2.0 / om * periodic_integral(f, phi1, phi2, PI, PI / 16.0);
         }
         let u2 = self.u1 + self.omega;
         let de = jacobi_epsilon(u2, self.modulus) - jacobi_epsilon(self.u1, self.modulus);
@@ -380,15 +382,9 @@ impl Elastica {
     /// ```
     ///
     /// # Errors
-    /// [`Error::InvalidCount`] if `samples` < 2.
+    /// [`Error::InvalidCount`] if `samples` < 2 or > [`MAX_POINTS`](crate::error::MAX_POINTS).
     pub fn centreline(&self, samples: usize) -> Result<Vec<Point2<f64>>> {
-        if samples < 2 {
-            return Err(Error::InvalidCount {
-                name: "samples",
-                value: samples as u64,
-                allowed: "at least 2 points",
-            });
-        }
+        check_points("samples", samples)?;
         let j1 = jacobi(self.u1, self.modulus);
         let mut out = Vec::with_capacity(samples);
         let mut z = 0.0;
@@ -397,15 +393,12 @@ impl Elastica {
             let sn = jacobi(u, self.modulus).sn;
             2.0 * sn * sn - 1.0
         };
+        let h = (0.25 * self.big_k).min(0.5);
         for i in 0..samples {
             let s = i as f64 / (samples - 1) as f64;
             if i > 0 {
-                z += gauss_legendre(
-                    zprime,
-                    self.u1 + self.omega * s_prev,
-                    self.u1 + self.omega * s,
-                    (0.25 * self.big_k).min(0.5),
-                ) / self.omega;
+                let (a, b) = (self.u1 + self.omega * s_prev, self.u1 + self.omega * s);
+                z += periodic_integral(zprime, a, b, 2.0 * self.big_k, h) / self.omega;
             }
             let j = jacobi(self.u1 + self.omega * s, self.modulus);
             let x = -(2.0 / self.omega) * (j1.sn * j1.sn - j.sn * j.sn) / (j.dn + j1.dn);
@@ -502,6 +495,26 @@ pub(crate) enum Ends {
     /// α-family member c with the Jacobi functions at the end distance t
     /// and E(k) if known (NaN otherwise).
     Alpha { c: f64, jac: Jacobi, e: f64 },
+}
+
+/// ∫_a^b f for f with period `period`: the whole periods in [a, b] as
+/// ∫_0^period f times their number, so the cost is at most two periods'
+/// worth of [`gauss_legendre`] pieces however long [a, b] is (n = 10⁹ coils
+/// has Ω ≈ 3e9).
+pub(crate) fn periodic_integral(
+    f: impl Fn(f64) -> f64,
+    a: f64,
+    b: f64,
+    period: f64,
+    h: f64,
+) -> f64 {
+    let whole = ((b - a) / period).floor();
+    if whole < 1.0 {
+        return gauss_legendre(f, a, b, h);
+    }
+    let rest = a + whole * period;
+    // one period from 0, where the arguments carry no rounding of a large u
+    whole * gauss_legendre(&f, 0.0, period, h) + gauss_legendre(&f, rest, b, h)
 }
 
 impl core::fmt::Display for Elastica {

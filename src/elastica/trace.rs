@@ -8,7 +8,7 @@ use super::secondary::secondary_fold;
 use super::solution::{Arm, Branch, Elastica, check_j, check_n};
 use super::symmetric::primary;
 use crate::curve::{ForceExtension, ForcePoint, ForceScale};
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, check_points};
 use crate::special::Modulus;
 
 /// Traces elastica branches into [`ForceExtension`] curves.
@@ -49,6 +49,10 @@ impl Default for Trace {
     }
 }
 
+/// The last point of a trace meets the force limit to this relative
+/// tolerance, or the trace is an error.
+const END_TOLERANCE: f64 = 1e-9;
+
 /// Largest q = ln(1/m₁) followed (m₁ ≈ 1e-300).
 const Q_MAX: f64 = 690.0;
 
@@ -87,13 +91,7 @@ impl Trace {
 
     fn check(&self, n: u32) -> Result<(u32, f64)> {
         check_n(n)?;
-        if self.points < 2 {
-            return Err(Error::InvalidCount {
-                name: "points",
-                value: self.points as u64,
-                allowed: "at least 2 points",
-            });
-        }
+        check_points("points", self.points)?;
         if !(self.max_force_scaled.is_finite() && self.max_force_scaled > 0.0) {
             return Err(Error::InvalidArgument {
                 name: "max_force_scaled",
@@ -103,8 +101,7 @@ impl Trace {
         }
         let sc = self.scale_coils.unwrap_or(n);
         check_n(sc)?;
-        let s = 2.0 * core::f64::consts::PI * f64::from(sc);
-        Ok((sc, self.max_force_scaled * s * s))
+        Ok((sc, ForceScale::of_coils(sc)?.value()))
     }
 
     /// The branch `branch` of an n-coil rod from where it starts (the ring
@@ -112,35 +109,46 @@ impl Trace {
     /// a secondary arm) up to the force limit.
     ///
     /// # Errors
-    /// [`Error::InvalidCount`] for n = 0, j = 0, `points` < 2 or
+    /// [`Error::InvalidCount`] for n = 0, j = 0, `points` < 2 or > [`MAX_POINTS`](crate::error::MAX_POINTS), or
     /// `scale_coils` = 0; [`Error::InvalidArgument`] for a bad force limit or
     /// one at or below the branch's starting force;
     /// [`Error::SecondaryNeedsOtherPeriods`] for a secondary branch with
     /// j = n.
     pub fn run(&self, n: u32, branch: Branch) -> Result<ForceExtension> {
-        let (sc, fmax) = self.check(n)?;
+        let (sc, scale) = self.check(n)?;
+        let limit = self.max_force_scaled;
         let path = Path::new(n, branch)?;
         let mut curve =
             ForceExtension::new(format!("{branch}, n = {n}"), "k", ForceScale::of_coils(sc)?);
-        curve.extend(path.sample(fmax, self.points, self.max_force_scaled)?);
+        curve.extend(path.sample(limit, scale, self.points)?);
         Ok(curve)
     }
 
     /// The whole secondary branch j of an n-coil rod as one curve: the
     /// lower arm from the force limit down to the fold, then the upper arm
     /// back up (the parameter k therefore first decreases, then increases).
-    /// `points` is shared between the arms.
+    /// `points` (at least 3) is shared between the arms; the curve has
+    /// exactly `points` points (before issue 10 it had one fewer).
     ///
     /// # Errors
-    /// As [`Trace::run`].
+    /// As [`Trace::run`]; [`Error::InvalidCount`] for `points` < 3.
     pub fn secondary(&self, n: u32, j: u32) -> Result<ForceExtension> {
-        let (sc, fmax) = self.check(n)?;
+        let (sc, scale) = self.check(n)?;
+        let limit = self.max_force_scaled;
         check_j(j)?;
         let lower = Path::new(n, Branch::Secondary { j, arm: Arm::Lower })?;
         let upper = Path::new(n, Branch::Secondary { j, arm: Arm::Upper })?;
-        let half = self.points / 2;
-        let mut a = lower.sample(fmax, half.max(2), self.max_force_scaled)?;
-        let b = upper.sample(fmax, (self.points - half).max(2), self.max_force_scaled)?;
+        if self.points < 3 {
+            return Err(Error::InvalidCount {
+                name: "points",
+                value: self.points as u64,
+                allowed: "at least 3 points for a whole secondary branch (both ends and the fold)",
+            });
+        }
+        // the fold is the last point of one arm and the first of the other
+        let lower_points = self.points.div_ceil(2);
+        let mut a = lower.sample(limit, scale, lower_points)?;
+        let b = upper.sample(limit, scale, self.points + 1 - lower_points)?;
         a.reverse();
         let mut curve = ForceExtension::new(
             format!("secondary j = {j}, n = {n}"),
@@ -191,7 +199,13 @@ impl Path {
     }
 
     fn at_q(&self, q: f64) -> Result<Elastica> {
-        let md = Modulus::from_complement((-q).exp())?;
+        // m = 1 − e^−q from expm1 while it is small: forces down to
+        // F ∝ q ≈ 1e-300 stay resolved
+        let md = if q < core::f64::consts::LN_2 {
+            Modulus::from_m(-(-q).exp_m1())?
+        } else {
+            Modulus::from_complement((-q).exp())?
+        };
         match self.branch {
             Branch::Upsilon => Ok(primary(self.n, md, Family::Upsilon)),
             Branch::Alpha => Ok(primary(self.n, md, Family::Alpha)),
@@ -213,8 +227,9 @@ impl Path {
         self.q0 + (q_end - self.q0) * s
     }
 
-    /// The parameter q where the force reaches `fmax`.
-    fn q_end(&self, fmax: f64, limit_scaled: f64) -> Result<f64> {
+    /// The parameter q where the force reaches `limit_scaled`·`scale`.
+    fn q_end(&self, limit_scaled: f64, scale: f64) -> Result<f64> {
+        let fmax = limit_scaled * scale;
         let start = self.at_q(self.q0)?;
         if start.force() >= fmax {
             return Err(Error::InvalidArgument {
@@ -223,29 +238,48 @@ impl Path {
                 allowed: "a limit above the force where the branch starts",
             });
         }
+        // followed to m₁ = e^−690, or no further than its start when a
+        // branch begins beyond (a bifurcation with n/j near 222)
+        let cap = Q_MAX.max(self.q0);
         let mut lo = self.q0;
-        let mut hi = (self.q0 + 1.0).max(2.0 * self.q0);
+        let mut hi = (self.q0 + 1.0).max(2.0 * self.q0).min(cap);
         while self.at_q(hi)?.force() < fmax {
+            if hi >= cap {
+                return Err(Error::ForceOutOfReach {
+                    requested: limit_scaled,
+                    reachable: self.at_q(cap)?.force() / scale,
+                });
+            }
             lo = hi;
-            hi *= 2.0;
-            if hi >= Q_MAX {
-                hi = Q_MAX;
+            hi = (2.0 * hi).min(cap);
+        }
+        // to the resolution of q (from [0, 1] that is ~1100 halvings for a
+        // limit of 1e-300, 60 near 1)
+        for _ in 0..1200 {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
                 break;
             }
-        }
-        for _ in 0..60 {
-            let mid = 0.5 * (lo + hi);
             if self.at_q(mid)?.force() < fmax {
                 lo = mid;
             } else {
                 hi = mid;
             }
         }
+        let reached = self.at_q(hi)?.force();
+        let miss = (reached / fmax - 1.0).abs();
+        if miss.is_nan() || miss > END_TOLERANCE {
+            return Err(Error::InvalidArgument {
+                name: "max_force_scaled",
+                value: limit_scaled,
+                allowed: "a limit the branch meets to 1e-9 in double precision (a modulus m = 1 - e^-q above the subnormal range)",
+            });
+        }
         Ok(hi)
     }
 
-    fn sample(&self, fmax: f64, points: usize, limit_scaled: f64) -> Result<Vec<ForcePoint>> {
-        let q_end = self.q_end(fmax, limit_scaled)?;
+    fn sample(&self, limit_scaled: f64, scale: f64, points: usize) -> Result<Vec<ForcePoint>> {
+        let q_end = self.q_end(limit_scaled, scale)?;
         let eval = |sigma: f64| -> Result<ForcePoint> {
             let e = self.at_q(self.q_of(sigma, q_end))?;
             Ok(ForcePoint {

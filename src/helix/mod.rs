@@ -54,10 +54,12 @@
 //! Forces are physical tensions in units of B/L² (there is no factor 2 here:
 //! the Appendix's F is the physical one, unlike Section 3's elastica F).
 
+mod scaled;
+
 use core::f64::consts::PI;
 
 use crate::curve::{ForceExtension, ForcePoint, ForceScale};
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, check_points};
 use crate::stiffness::Stiffness;
 
 /// A unit-length helical spring of `n` turns at helix angle θ0 that stays an
@@ -68,6 +70,14 @@ pub struct Helix {
     coils: u32,
     theta0: f64,
     stiffness: Stiffness,
+}
+
+/// P and Q over max(B, C), and min(B, C) (see [`Helix::scaled_p_q`]).
+struct ScaledPQ {
+    p: f64,
+    q: f64,
+    big: f64,
+    small: f64,
 }
 
 /// Largest extension of [`Helix::curve`]: the force diverges as Δz → 1.
@@ -144,12 +154,46 @@ impl Helix {
         }
     }
 
-    /// (P, Q) of the module docs.
-    fn p_q(&self, theta: f64) -> (f64, f64) {
+    /// (P, Q) of the module docs divided by max(B, C), with min(B, C): every
+    /// closed form is written with these so that no stiffness in
+    /// (0, `f64::MAX`] overflows or underflows on the way (the helix depends
+    /// on B and C only through C/B and one overall scale).
+    fn scaled_p_q(&self, theta: f64) -> ScaledPQ {
         let (b, c) = (self.stiffness.b(), self.stiffness.c());
+        let (big, small) = if b >= c { (b, c) } else { (c, b) };
+        let (bt, ct) = (b / big, c / big);
         let (s, co) = theta.sin_cos();
         let (s0, c0) = self.theta0.sin_cos();
-        (b * s * s0 + c * co * c0, b * s * s + c * co * co)
+        ScaledPQ {
+            p: bt * s * s0 + ct * co * c0,
+            q: bt * s * s + ct * co * co,
+            big,
+            small,
+        }
+    }
+
+    /// F/ρ_f² with F = −(2πn)² min(B, C) p̃ sin(θ − θ0) / (sin θ q̃²),
+    /// p̃ = P/max(B, C), q̃ = Q/max(B, C) (the module docs' F): ρ_f = 2πn
+    /// gives F/(2πn)², ρ_f = 1 gives F.
+    fn scaled_force(&self, theta: f64, rho_f: f64) -> f64 {
+        let pq = self.scaled_p_q(theta);
+        let r0 = self.rho0() / rho_f;
+        -scaled::ratio(
+            &[pq.small, pq.p, (theta - self.theta0).sin(), r0, r0],
+            &[theta.sin(), pq.q, pq.q],
+        )
+    }
+
+    fn finite(value: f64, quantity: &'static str, theta: f64) -> Result<f64> {
+        if value.is_finite() {
+            Ok(value)
+        } else {
+            Err(Error::Overflow {
+                quantity,
+                name: "theta",
+                value: theta,
+            })
+        }
     }
 
     /// Physical tension along the axis at helix angle θ (corrected Appendix
@@ -161,10 +205,14 @@ impl Helix {
     ///
     /// Positive (tension) for θ < θ0, zero at θ0, → ∞ as θ → 0.
     /// Accuracy: 8e-16 relative (worst of 135 points) against the mpmath energy derivative
-    /// (`tests/helix`).
+    /// (`tests/helix`). Evaluated with B and C scaled by max(B, C) and the
+    /// exponents of the factors carried apart, so every stiffness in
+    /// (0, `f64::MAX`] gives the same relative accuracy (`tests/helix`:
+    /// scaling B, C by 2^±1000 scales F exactly).
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] if θ is not in (0, π).
+    /// [`Error::InvalidArgument`] if θ is not in (0, π); [`Error::Overflow`]
+    /// if |F| is beyond the largest double (θ → 0 with a huge stiffness).
     ///
     /// ```
     /// use hockle::Stiffness;
@@ -175,10 +223,7 @@ impl Helix {
     /// ```
     pub fn force(&self, theta: f64) -> Result<f64> {
         Self::check(theta)?;
-        let (p, q) = self.p_q(theta);
-        let r0 = self.rho0();
-        let bc = self.stiffness.b() * self.stiffness.c();
-        Ok(-bc * r0 * r0 * p * (theta - self.theta0).sin() / (theta.sin() * q * q))
+        Self::finite(self.scaled_force(theta, 1.0), "force", theta)
     }
 
     /// [`Self::force`] divided by (2πn)²B, the scale of the paper's plots
@@ -187,8 +232,14 @@ impl Helix {
     /// # Errors
     /// As [`Self::force`].
     pub fn force_scaled(&self, theta: f64) -> Result<f64> {
-        let r0 = self.rho0();
-        Ok(self.force(theta)? / (r0 * r0) / self.stiffness.b())
+        Self::check(theta)?;
+        let pq = self.scaled_p_q(theta);
+        // F/((2πn)²B) = −(min(B, C)/B) p̃ sin(θ − θ0) / (sin θ q̃²)
+        let f = -scaled::ratio(
+            &[pq.small, pq.p, (theta - self.theta0).sin()],
+            &[theta.sin(), pq.q, pq.q, self.stiffness.b()],
+        );
+        Self::finite(f, "force", theta)
     }
 
     /// Extension Δz = cos θ (unit length).
@@ -216,18 +267,21 @@ impl Helix {
     /// ```
     pub fn radius(&self, theta: f64) -> Result<f64> {
         Self::check(theta)?;
-        Ok(theta.sin() / self.twist_rate(theta)?)
+        let pq = self.scaled_p_q(theta);
+        let r = scaled::ratio(&[theta.sin(), pq.q], &[self.rho0(), pq.p]);
+        Self::finite(r, "radius", theta)
     }
 
     /// Turning rate ρ = ρ0 P / Q of the frame about the axis (2π times the
     /// number of turns of the deformed helix); ρ0 = 2πn.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] if θ is not in (0, π).
+    /// [`Error::InvalidArgument`] if θ is not in (0, π); [`Error::Overflow`]
+    /// if ρ is beyond the largest double.
     pub fn twist_rate(&self, theta: f64) -> Result<f64> {
         Self::check(theta)?;
-        let (p, q) = self.p_q(theta);
-        Ok(self.rho0() * p / q)
+        let pq = self.scaled_p_q(theta);
+        Self::finite(self.rho0() * pq.p / pq.q, "twist rate", theta)
     }
 
     /// Strain energy U = ½[B(κ − κ0)² + C(τ − τ0)²] of the helix at angle θ
@@ -244,7 +298,8 @@ impl Helix {
     /// ```
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] if θ is not in (0, π).
+    /// [`Error::InvalidArgument`] if θ is not in (0, π); [`Error::Overflow`]
+    /// if U is beyond the largest double.
     pub fn energy(&self, theta: f64) -> Result<f64> {
         let rho = self.twist_rate(theta)?;
         let r0 = self.rho0();
@@ -252,11 +307,16 @@ impl Helix {
         let (s0, c0) = self.theta0.sin_cos();
         let dk = rho * s - r0 * s0;
         let dt = rho * c - r0 * c0;
-        Ok(0.5 * (self.stiffness.b() * dk * dk + self.stiffness.c() * dt * dt))
+        let pq = self.scaled_p_q(theta);
+        let (bt, ct) = (self.stiffness.b() / pq.big, self.stiffness.c() / pq.big);
+        let u = scaled::ratio(&[0.5 * (bt * dk * dk + ct * dt * dt), pq.big], &[]);
+        Self::finite(u, "energy", theta)
     }
 
     /// Spring constant dF/dΔz at the unstressed state:
-    /// (2πn)² B C / (sin²θ0 (B sin²θ0 + C cos²θ0)).
+    /// (2πn)² B C / (sin²θ0 (B sin²θ0 + C cos²θ0)), evaluated as
+    /// (2πn)² min(B, C) / (sin²θ0 q̃0) with the exponents carried apart (see
+    /// [`Self::force`]).
     ///
     /// ```
     /// use hockle::Stiffness;
@@ -264,15 +324,18 @@ impl Helix {
     /// let h = Helix::new(4, 1.2, Stiffness::nikolai(10.0, 0.05)?)?;
     /// let t = 1.2 - 1e-7;
     /// let slope = h.force(t)? / (h.extension(t)? - h.extension(1.2)?);
-    /// assert!((slope / h.spring_constant() - 1.0).abs() < 1e-5);
+    /// assert!((slope / h.spring_constant()? - 1.0).abs() < 1e-5);
     /// # Ok::<(), hockle::Error>(())
     /// ```
-    #[must_use]
-    pub fn spring_constant(&self) -> f64 {
-        let (s0, c0) = self.theta0.sin_cos();
-        let (b, c) = (self.stiffness.b(), self.stiffness.c());
-        let r0 = self.rho0();
-        r0 * r0 * b * c / (s0 * s0 * (b * s0 * s0 + c * c0 * c0))
+    ///
+    /// # Errors
+    /// [`Error::Overflow`] if the constant is beyond the largest double
+    /// (θ0 → 0 with a large stiffness).
+    pub fn spring_constant(&self) -> Result<f64> {
+        let pq = self.scaled_p_q(self.theta0);
+        let (s0, r0) = (self.theta0.sin(), self.rho0());
+        let k = scaled::ratio(&[r0, r0, pq.small], &[s0, s0, pq.q]);
+        Self::finite(k, "spring constant", self.theta0)
     }
 
     /// The force–extension curve from the unstressed state Δz = cos θ0 to
@@ -280,7 +343,7 @@ impl Helix {
     /// parameter θ (radians), force scaled by (2πn)².
     ///
     /// # Errors
-    /// [`Error::InvalidCount`] if `samples` < 2.
+    /// [`Error::InvalidCount`] if `samples` < 2 or > [`MAX_POINTS`](crate::error::MAX_POINTS).
     ///
     /// ```
     /// use hockle::Stiffness;
@@ -298,16 +361,10 @@ impl Helix {
     /// As [`Self::curve`], up to the extension `max_extension`.
     ///
     /// # Errors
-    /// [`Error::InvalidCount`] if `samples` < 2; [`Error::InvalidArgument`] if
+    /// [`Error::InvalidCount`] if `samples` < 2 or > [`MAX_POINTS`](crate::error::MAX_POINTS); [`Error::InvalidArgument`] if
     /// `max_extension` is not in (cos θ0, 1).
     pub fn curve_to(&self, samples: usize, max_extension: f64) -> Result<ForceExtension> {
-        if samples < 2 {
-            return Err(Error::InvalidCount {
-                name: "samples",
-                value: samples as u64,
-                allowed: "at least 2 points",
-            });
-        }
+        check_points("samples", samples)?;
         let z0 = self.theta0.cos();
         if !(max_extension > z0 && max_extension < 1.0) {
             return Err(Error::InvalidArgument {
@@ -326,7 +383,9 @@ impl Helix {
                 self.theta0
             } else {
                 let t = i as f64 / (samples - 1) as f64;
-                (z0 + t * (max_extension - z0)).acos()
+                // z0 + (zmax − z0) can round above zmax (to 1 for
+                // zmax = 1 − 2⁻⁵³, where θ = 0 is not a helix)
+                (z0 + t * (max_extension - z0)).min(max_extension).acos()
             };
             curve.push(ForcePoint {
                 extension: theta.cos(),
@@ -349,3 +408,11 @@ impl core::fmt::Display for Helix {
         )
     }
 }
+
+// Every model, setting and result type of this layer can cross threads.
+const _: fn() = || {
+    fn send_sync<T: Send + Sync>() {}
+    send_sync::<Helix>();
+    send_sync::<Stiffness>();
+    send_sync::<ForceExtension>();
+};

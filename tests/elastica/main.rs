@@ -5,6 +5,7 @@
 mod common;
 
 mod data;
+mod extremes;
 mod physics;
 mod series;
 mod tables;

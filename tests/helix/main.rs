@@ -4,6 +4,8 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod extremes;
+
 use common::rel_err;
 use hockle::Error;
 use hockle::Stiffness;
@@ -89,13 +91,13 @@ fn spring_constant_is_the_slope_at_rest() {
         // one-sided slope over δθ = 1e-6: first-order error ≈ δθ·|F''/F'| ≲ 1e-5
         let t = th0 - 1e-6;
         let slope = h.force(t).unwrap() / (t.cos() - th0.cos());
-        assert!(rel_err(slope, h.spring_constant()) < 1e-4);
+        assert!(rel_err(slope, h.spring_constant().unwrap()) < 1e-4);
     }
     // flat ring limit: the classical close-coiled spring constant C (2πn)²
     let s = Stiffness::new(10.0, 1.0, 1.7).unwrap();
     let h = Helix::new(4, core::f64::consts::FRAC_PI_2, s).unwrap();
     let expect = 1.7 * (8.0 * core::f64::consts::PI).powi(2);
-    assert!(rel_err(h.spring_constant(), expect) < 1e-15);
+    assert!(rel_err(h.spring_constant().unwrap(), expect) < 1e-15);
 }
 
 #[test]
@@ -164,8 +166,26 @@ proptest! {
         if let Ok(s) = Stiffness::new(a, b, c)
             && let Ok(h) = Helix::new(n % 8, th0, s)
         {
-            let _ = (h.force(t), h.radius(t), h.energy(t), h.extension(t), h.spring_constant());
+            // every Ok is finite (B, C = 1e200 gave NaN forces before)
+            for v in [h.force(t), h.radius(t), h.energy(t), h.extension(t),
+                      h.twist_rate(t), h.spring_constant()].into_iter().flatten() {
+                prop_assert!(v.is_finite(), "{}: θ = {}: {}", h, t, v);
+            }
             let _ = h.curve_to(samples, zmax);
         }
+    }
+}
+
+#[test]
+fn force_scaled_divides_by_the_whole_force_scale() {
+    // F/((2πn)²B): the same number for (A, B, C) and (2A, 2B, 2C), and the
+    // physical force over (2πn)²B to a few roundings.
+    let h1 = Helix::new(4, 1.2, Stiffness::new(10.0, 1.0, 1.7).unwrap()).unwrap();
+    let h2 = Helix::new(4, 1.2, Stiffness::new(20.0, 2.0, 3.4).unwrap()).unwrap();
+    let scale = (8.0 * std::f64::consts::PI).powi(2) * 2.0;
+    for t in [0.3, 0.7, 1.1] {
+        let (f1, f2) = (h1.force_scaled(t).unwrap(), h2.force_scaled(t).unwrap());
+        assert!(rel_err(f1, f2) < 1e-14, "{f1} vs {f2}");
+        assert!(rel_err(f2, h2.force(t).unwrap() / scale) < 1e-14);
     }
 }

@@ -189,13 +189,18 @@ fn huge_sample_counts_are_refused_not_allocated() {
     for n in [0, usize::MAX, hockle::rod::Equilibrium::MAX_SAMPLES + 1] {
         assert!(matches!(
             e.centreline_samples(n),
-            Err(Error::InvalidCount { name: "samples", .. })
+            Err(Error::InvalidCount {
+                name: "samples",
+                ..
+            })
         ));
     }
     assert_eq!(e.centreline_samples(4).unwrap().len(), 5);
     // Mesh counts past the bvp's limit are refused before any work.
     assert!(matches!(
-        Pull::new(paper(), Target::Force(1.0)).intervals(usize::MAX).run(()),
+        Pull::new(paper(), Target::Force(1.0))
+            .intervals(usize::MAX)
+            .run(()),
         Err(Error::InvalidCount { .. })
     ));
 }

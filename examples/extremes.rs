@@ -1,0 +1,187 @@
+//! The extremes tables of docs/ACCURACY.md ("extremes" section): what
+//! `special` and `elastica` give at the ends of their domains.
+//!
+//! ```text
+//! cargo run --release --example extremes
+//! ```
+//!
+//! special: against the mpmath table `tests/data/special_extremes.csv`
+//! (`python3 tests/data/gen_special_extremes.py`), errors in ulps of the
+//! true value, raw and divided by 1 + the condition number |x f′/f|.
+//! elastica: the residual of the end condition κ(s_i) = 2πn (eq6, evaluated
+//! with `special::jacobi`, independent of the root solve), the centreline's
+//! end against the closed-form extension, and traces to large forces.
+
+use core::f64::consts::PI;
+
+use hockle::elastica::{Branch, Elastica, Trace, secondary_fold};
+use hockle::special::{Modulus, ellip_e, ellip_e_inc, ellip_f, ellip_k, jacobi};
+
+const TABLE: &str = include_str!("../tests/data/special_extremes.csv");
+
+fn ulps(x: f64, r: f64) -> f64 {
+    if x == r {
+        0.0
+    } else {
+        ((x - r) / r).abs() / f64::EPSILON
+    }
+}
+
+fn special() {
+    println!(
+        "| m₁ | K (ulp) | E (ulp) | sn, cn, dn max (ulp) | sn, cn, dn max (norm.) | F(φ) max (norm.) | E(φ) max (norm.) | non-finite |"
+    );
+    println!("|---|---|---|---|---|---|---|---|");
+    let mut m1s: Vec<&str> = Vec::new();
+    for line in TABLE.lines().skip(1) {
+        let m1 = line.split(',').nth(1).unwrap();
+        if !m1s.contains(&m1) {
+            m1s.push(m1);
+        }
+    }
+    for m1s_ in m1s {
+        let md = Modulus::from_complement(m1s_.parse().unwrap()).unwrap();
+        let m = md.m();
+        let (mut k, mut e, mut jr, mut jn, mut fnorm, mut enorm, mut bad) =
+            (0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0);
+        for line in TABLE.lines().skip(1) {
+            let f: Vec<&str> = line.split(',').collect();
+            if f[1] != m1s_ {
+                continue;
+            }
+            let r: f64 = f[3].parse().unwrap();
+            let x: f64 = if f[2].is_empty() {
+                0.0
+            } else {
+                f[2].parse().unwrap()
+            };
+            let j = jacobi(x, md);
+            let (got, cond) = match f[0] {
+                "K" => (ellip_k(md), 0.0),
+                "E" => (ellip_e(md), 0.0),
+                "sn" => (j.sn, (x * j.cn * j.dn / j.sn).abs()),
+                "cn" => (j.cn, (x * j.sn * j.dn / j.cn).abs()),
+                "dn" => (j.dn, (x * m * j.sn * j.cn / j.dn).abs()),
+                "F" => {
+                    let v = ellip_f(x, md);
+                    let d = (1.0 - m * x.sin().powi(2)).sqrt();
+                    (v, (x / (d * v)).abs())
+                }
+                _ => {
+                    let v = ellip_e_inc(x, md);
+                    let d = (1.0 - m * x.sin().powi(2)).sqrt();
+                    (v, (x * d / v).abs())
+                }
+            };
+            if !got.is_finite() {
+                bad += 1;
+                continue;
+            }
+            let u = ulps(got, r);
+            let norm = u / (1.0 + cond);
+            match f[0] {
+                "K" => k = u,
+                "E" => e = u,
+                "sn" | "cn" | "dn" => {
+                    jr = jr.max(u);
+                    jn = jn.max(norm);
+                }
+                "F" => fnorm = fnorm.max(norm),
+                _ => enorm = enorm.max(norm),
+            }
+        }
+        println!(
+            "| {m1s_} | {k:.2} | {e:.2} | {jr:.3e} | {jn:.2} | {fnorm:.2} | {enorm:.2} | {bad} |"
+        );
+    }
+}
+
+fn end_residual(e: &Elastica) -> f64 {
+    let k0 = 2.0 * PI * f64::from(e.coils());
+    e.end_curvatures()
+        .iter()
+        .map(|c| ((c - k0) / k0).abs())
+        .fold(0.0, f64::max)
+}
+
+fn elastica() {
+    println!(
+        "| n | m₁ | υ: F/(2πn)² | υ: eq6 residual | υ: centreline end − Δz | α: F/(2πn)² | α: eq6 residual | α: centreline end − Δz |"
+    );
+    println!("|---|---|---|---|---|---|---|---|");
+    for n in [1, 8, 50] {
+        for m1 in [1e-300, 1e-310, 1e-320, 5e-324] {
+            let s = Elastica::symmetric_with(n, Modulus::from_complement(m1).unwrap()).unwrap();
+            let mut row = format!("| {n} | {m1:e} |");
+            for e in [s.upsilon, s.alpha] {
+                let c = e.centreline(200).unwrap();
+                let end = c[199].y - e.extension();
+                row += &format!(
+                    " {:.4e} | {:.1e} | {:.1e} |",
+                    e.force_scaled(),
+                    end_residual(&e),
+                    end.abs()
+                );
+            }
+            println!("{row}");
+        }
+    }
+    println!();
+    println!("| n | branch | F/(2πn)² = 1e2 | 1e4 | 1e5 | 1e6 |");
+    println!("|---|---|---|---|---|---|");
+    for n in [1, 8, 50] {
+        for branch in [Branch::Upsilon, Branch::Alpha, Branch::Theta { j: n }] {
+            let mut row = format!("| {n} | {branch} |");
+            for limit in [1e2, 1e4, 1e5, 1e6] {
+                let cell = match Trace::new()
+                    .points(20)
+                    .max_force_scaled(limit)
+                    .run(n, branch)
+                {
+                    Ok(c) => {
+                        let last = c.force_scaled(c.len() - 1).unwrap();
+                        let off = (last / limit - 1.0).abs();
+                        if off == 0.0 {
+                            " Ok, end exact |".to_string()
+                        } else {
+                            format!(" Ok, end {off:.0e} off |")
+                        }
+                    }
+                    Err(hockle::Error::ForceOutOfReach { reachable, .. }) => {
+                        format!(" ForceOutOfReach (reach {reachable:.3e}) |")
+                    }
+                    Err(e) => format!(" {e} |"),
+                };
+                row += &cell;
+            }
+            println!("{row}");
+        }
+    }
+    println!();
+    println!("| n | j | fold k′ = √m₁ | eq6 residual at the fold |");
+    println!("|---|---|---|---|");
+    for (n, j) in [
+        (8, 36_960),
+        (1, 100_000),
+        (8, 273_537),
+        (50, 2),
+        (1, u32::MAX),
+        (8, u32::MAX),
+    ] {
+        match secondary_fold(n, j) {
+            Ok(f) => println!(
+                "| {n} | {j} | {:.3e} | {:.1e} |",
+                f.solution().elliptic_modulus().k_prime(),
+                end_residual(&f.solution())
+            ),
+            Err(e) => println!("| {n} | {j} | {e} | |"),
+        }
+    }
+}
+
+fn main() {
+    println!("### special\n");
+    special();
+    println!("\n### elastica\n");
+    elastica();
+}
