@@ -106,7 +106,7 @@ fn sin_cos_half_pi(a: f64) -> (f64, f64) {
 /// rounding leaves |r| a hair above π/2 (c < 0), the period count moves by
 /// one so that the reduced angle π − |r| has c > 0.
 #[inline(always)]
-fn reduce_pi_sin_cos(phi: f64) -> (f64, f64, f64, f64) {
+pub(crate) fn reduce_pi_sin_cos(phi: f64) -> (f64, f64, f64, f64) {
     let (mut j, mut r) = reduce_pi(phi);
     let (s, mut c) = sin_cos_half_pi(r.abs());
     if c < 0.0 {

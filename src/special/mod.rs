@@ -14,6 +14,10 @@
 //! | [`jacobi`] | sn, cn, dn and the amplitude am (continuous), plus the quotients | 22.2, 22.16.1 |
 //! | [`jacobi_epsilon`] | ε(u) = ∫0^u dn² = E(am u, k), the paper's E(u, k) in eq5 | 22.16.14 |
 //! | [`jacobi_zeta`] | Z(u) = ε(u) − uE/K | 22.16.32 |
+//! | [`FixedModulus`] | sn, cn, dn, am, ε (and their m-derivatives) at many u, one modulus | – |
+//! | [`ellip_k_dm`], [`ellip_e_dm`] | dK/dm, dE/dm | 19.4.1 |
+//! | [`ellip_f_dm`], [`ellip_e_inc_dm`] | ∂F(φ\|m)/∂m, ∂E(φ\|m)/∂m | 19.4.2 |
+//! | [`jacobi_dm`] | ∂sn/∂m, ∂cn/∂m, ∂dn/∂m, ∂am/∂m at fixed u | 19.4.2, 22.16.1 |
 //!
 //! K′ = K(k′) is `ellip_k(modulus.complementary())`.
 //!
@@ -26,8 +30,12 @@
 //!   positive. Coefficients come from the Gauss series by exact
 //!   differentiation (`tests/data/gen_special_coeffs.py`, mpmath). This is
 //!   Fukushima's (2009) scheme; it beats Carlson's R_F(0, m₁, 1) (measured
-//!   2.2 ulp, ~45 ns) on both accuracy (≤ 0.9 ulp) and speed (~7 ns), and for m ≥ ½ the
+//!   2.2 ulp, ~45 ns) on both accuracy and speed (~7 ns), and for m ≥ ½ the
 //!   offset is formed from m₁, so a modulus given by its complement is exact.
+//!   Near m = 1, −ln m₁ is formed in double-double (m₁ = f·2^e,
+//!   −e ln 2 exact, ln f ≤ 0.7 from libm), which took K from 1.2 to
+//!   ≤ 0.74 ulp; the K that reduces u modulo 2K also carries L·QK exactly
+//!   (Dekker), so 2K is right to ~1e-32.
 //! - **F, E(φ)**: φ = jπ + r (π in three Cody–Waite parts), then Carlson's
 //!   R_F, R_D (DLMF 19.25.5, 19.25.9) with 1 − m sin²r formed as
 //!   cos²r + m₁ sin²r, E(r) written as three non-negative terms, and within
@@ -44,16 +52,40 @@
 //!   which alone took ~15 of ~40 ns in `ellip_f`.
 //! - **sn, cn, dn, am**: u = 2jK + r with 2K as a double-double and exact
 //!   products (|r| ≤ K); |r| > K/2 is folded by the quarter-period shift
-//!   (DLMF 22.4.3) to K − |r| ∈ [0, K/2], with sn = √(1 − m₁ sd²) there. On
-//!   [0, K/2] the argument is halved to ≤ 1/16, expanded in Maclaurin series
-//!   (to u¹¹) and doubled back, carrying 1 − cn and 1 − dn while they are
-//!   below ½ (Fukushima's conditional duplication) and written so that
-//!   every step adds positive terms. For m₁ < 2⁻³⁰ the doubling instead
-//!   starts from the first-order expansion about m = 1 (DLMF 22.10.4–6)
-//!   at v₀ = ½ ln(2⁻²⁴/m₁) ≥ 2: doubling cn from 1/16 up to K/2 ≈ 10–190
-//!   would accumulate ~2 ulp per step. am = atan2(sn, cn) + jπ, so it is
-//!   continuous. Descending Landen (AGM) was not used: its cn = cos φ₀
-//!   loses all digits near K/2 as m → 1.
+//!   (DLMF 22.4.3) to K − |r| ∈ [0, K/2] (K − |r| formed from K's
+//!   double-double), with sn = √(1 − m₁ sd²) there. On [0, K/2]:
+//!   - for m₁ ≤ 0.1 and v ≥ 1, the ascending Landen (Gauss) transformation
+//!     (DLMF 22.7.4–7): k′ → (1 − k)/(1 + k) = m₁/(1 + k)², so m₁ falls as
+//!     ~m₁²/16 per step, until the first-order expansion about m = 1
+//!     (DLMF 22.10.4–6, one `exp` and one `expm1`) is exact to rounding at
+//!     the scaled argument (m₁ e^{2w} ≤ 2⁻²⁴); then back up with
+//!     sn = (1 + k′) s c/d, cn = (d² − k′)/((1 − k′) d),
+//!     dn = (d² + k′)/((1 + k′) d) (one division per step; at most four
+//!     steps), and sn = √((1 − cn)(1 + cn)) once cn < 0.7. No doubling:
+//!     the doubling it replaces accumulated ~1.5 ulp per step, each
+//!     doubled by the later ones, and reached 8 ulp normalised in cn and
+//!     dn near m₁ ~ 1e-8 and v ~ K/2 (issue 9).
+//!   - otherwise the argument is halved to ≤ 1/16, expanded in Maclaurin
+//!     series (to u¹¹) and doubled back (at most four steps for v < 1),
+//!     carrying 1 − cn and 1 − dn while they are below ½ (Fukushima's
+//!     conditional duplication) and written so that every step adds
+//!     positive terms; for m₁ < 2⁻³⁰ (v < 1) the expansion about m = 1
+//!     replaces the series outright.
+//!
+//!   am = atan2(sn, cn) + jπ, so it is continuous. Descending Landen
+//!   (AGM) was not used: its cn = cos φ₀ loses all digits near K/2 as
+//!   m → 1. [`FixedModulus`] holds K, E, the reduction constants, the
+//!   series coefficients and the Landen chain for [0, K/2], so that many u
+//!   at one modulus pay for them once.
+//! - **m-derivatives**: dK/dm = R_D(0, 1, m₁)/6 and dE/dm = −R_D(0, m₁, 1)/6
+//!   (DLMF 19.25.1; the closed forms (E − m₁K)/(2 m m₁), (E − K)/(2m) where
+//!   R_D would need many steps and they cancel little);
+//!   ∂F/∂m = (sin³φ/6) R_D(cos²φ, 1, Δ²), ∂E(φ)/∂m = −(sin³φ/6)
+//!   R_D(cos²φ, Δ², 1) (DLMF 19.4.2 rewritten with 19.25.9–10: no
+//!   cancellation), plus 2j dK/dm or 2j dE/dm per period; at fixed u,
+//!   ∂am/∂m = −dn ∂F/∂m at φ = am u (u = F(am u | m) held fixed), and
+//!   ∂sn/∂m = cn ∂am/∂m, ∂cn/∂m = −sn ∂am/∂m,
+//!   ∂dn/∂m = −sn (sn + 2m cn ∂am/∂m)/(2 dn).
 //! - **ε**: on [0, K/2], ε = m₁u + (m m₁/3) sn³ R_D(cn², 1, dn²) + m sn cd
 //!   (DLMF 19.25.9 at φ = am u, since F(am u) = u); beyond K/2,
 //!   ε(K − s) = E − ε(s) + m sn s cd s (addition formula, DLMF 22.16.27),
@@ -124,6 +156,7 @@ mod carlson_series;
 #[rustfmt::skip]
 mod coeffs;
 mod complete;
+mod derivatives;
 mod duplication;
 mod epsilon;
 mod fixed;
@@ -135,6 +168,7 @@ mod period;
 mod poly;
 
 pub use complete::{ellip_e, ellip_k};
+pub use derivatives::{JacobiDm, ellip_e_dm, ellip_e_inc_dm, ellip_f_dm, ellip_k_dm, jacobi_dm};
 pub use epsilon::{jacobi_epsilon, jacobi_zeta};
 pub use fixed::FixedModulus;
 pub use incomplete::{ellip_e_inc, ellip_f};
