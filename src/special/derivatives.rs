@@ -22,7 +22,8 @@ use super::Modulus;
 use super::carlson::rd;
 use super::complete::{ellip_e, ellip_k};
 use super::incomplete::reduce_pi_sin_cos;
-use super::jacobi::Jacobi;
+use super::jacobi::{Jacobi, assemble, sncndn_half_period, sncndn_quarter};
+use super::period::Period;
 
 /// Below this m₁, dK/dm = (E − m₁K)/(2 m m₁) (E ≥ 1 ≫ m₁K ≤ 0.16: little
 /// cancellation) rather than R_D(0, 1, m₁)/6 (steps grow as ln(1/m₁)).
@@ -232,5 +233,18 @@ pub(crate) fn jacobi_dm_from(
 /// ```
 #[must_use]
 pub fn jacobi_dm(u: f64, modulus: Modulus) -> (Jacobi, JacobiDm) {
-    super::fixed::FixedModulus::new(modulus).jacobi_dm(u)
+    let (m, mc) = (modulus.m(), modulus.complement());
+    if !u.is_finite() || mc == 0.0 || m == 0.0 {
+        // The special cases of `jacobi` (the general formulas below still
+        // apply to their values).
+        return super::fixed::FixedModulus::new(modulus).jacobi_dm(u);
+    }
+    let period = Period::new(modulus);
+    let red = period.reduce(u);
+    let f = sncndn_half_period(red.r.abs(), &period, mc, mc.sqrt(), |v| {
+        sncndn_quarter(v, m, mc)
+    });
+    let value = assemble(&red, f);
+    let d = jacobi_dm_from(&value, red.j, red.r, m, || ellip_k_dm(modulus));
+    (value, d)
 }
