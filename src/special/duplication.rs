@@ -2,6 +2,7 @@
 //! duplication (crate-private).
 
 use super::landen::{hyperbolic_reach, sncndn_hyperbolic};
+use super::maclaurin_coeffs::{SN, Y, Z};
 
 /// Below this |u| the Maclaurin series (to u¹¹ for sn, u¹⁰ for cn, dn) is
 /// exact to rounding: the first neglected coefficient is ≤ 0.0057 for every
@@ -24,21 +25,50 @@ const SERIES_MAX: f64 = 1.0 / 16.0;
 /// dn(2v)     = √(cn²(2v) + m₁ sn²(2v))       (once dn < ½, which needs cn < ½)
 /// ```
 pub(crate) fn sncndn_small(v: f64, m: f64, mc: f64) -> (f64, f64, f64) {
-    Maclaurin::new(m, mc).eval(v)
+    MaclaurinLow::new(m, mc).eval(v)
 }
 
 /// The Maclaurin coefficients of sn, 1 − cn and 1 − dn at one modulus
-/// (DLMF 22.10.1–3), in x² after the leading term, signs included.
+/// (DLMF 22.10.1–3), in x² after the leading term, signs included: `NS`
+/// terms for sn (from u³), `NY` for 1 − cn and 1 − dn (from u²), exact to
+/// rounding for |u| ≤ `max`.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Maclaurin {
-    s: [f64; 5],
-    y: [f64; 5],
-    z: [f64; 5],
+pub(crate) struct Maclaurin<const NS: usize, const NY: usize> {
+    s: [f64; NS],
+    y: [f64; NY],
+    z: [f64; NY],
+    max: f64,
     m: f64,
     mc: f64,
 }
 
-impl Maclaurin {
+/// To u¹¹ from |u| ≤ 1/16: coefficients cheap enough to form at every call.
+pub(crate) type MaclaurinLow = Maclaurin<5, 5>;
+/// To u²² from |u| ≤ 1/4 (two doublings fewer), for [`FixedModulus`]
+/// (crate::special::FixedModulus), which forms its 32 polynomials once.
+pub(crate) type MaclaurinHigh = Maclaurin<10, 11>;
+
+/// Below this |u| the order-22 series is exact to rounding: its first
+/// neglected terms are ≤ 2.3e-18 relative for every m ∈ [0, 1]
+/// (`tests/data/gen_special_coeffs.py`).
+const SERIES_MAX_HIGH: f64 = 0.25;
+
+impl MaclaurinHigh {
+    /// The coefficients from their exact polynomials in m (generated).
+    pub(crate) fn new(m: f64, mc: f64) -> Self {
+        let at = |p: &[f64]| p.iter().rev().fold(0.0, |acc, &c| c + m * acc);
+        Self {
+            s: SN.map(at),
+            y: Y.map(at),
+            z: Z.map(at),
+            max: SERIES_MAX_HIGH,
+            m,
+            mc,
+        }
+    }
+}
+
+impl MaclaurinLow {
     #[inline(always)]
     pub(crate) fn new(m: f64, mc: f64) -> Self {
         let m2 = m * m;
@@ -62,11 +92,14 @@ impl Maclaurin {
             s: [-(1.0 + m) * (1.0 / 6.0), s5, -s7, s9, -s11],
             y: [0.5, -c4, c6, -c8, c10],
             z: [0.5 * m, -d4, d6, -d8, d10],
+            max: SERIES_MAX,
             m,
             mc,
         }
     }
+}
 
+impl<const NS: usize, const NY: usize> Maclaurin<NS, NY> {
     /// (sn, cn, dn) at 0 ≤ v ≤ K/2, as described at [`sncndn_small`].
     #[inline(always)]
     pub(crate) fn eval(&self, v: f64) -> (f64, f64, f64) {
@@ -76,12 +109,12 @@ impl Maclaurin {
         }
         let mut n = 0;
         let mut x = v;
-        while x > SERIES_MAX {
+        while x > self.max {
             x *= 0.5;
             n += 1;
         }
         let x2 = x * x;
-        let horner = |a: &[f64; 5]| a[0] + x2 * (a[1] + x2 * (a[2] + x2 * (a[3] + x2 * a[4])));
+        let horner = |a: &[f64]| a.iter().rev().fold(0.0, |acc, &c| c + x2 * acc);
         let mut sn = x * (1.0 + x2 * horner(&self.s));
         // y = 1 − cn, z = 1 − dn.
         let mut y = x2 * horner(&self.y);

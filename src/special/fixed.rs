@@ -3,7 +3,7 @@
 use super::Modulus;
 use super::complete::{ellip_e_dd, ellip_k_dd};
 use super::derivatives::{JacobiDm, ellip_k_dm, jacobi_dm_from};
-use super::duplication::Maclaurin;
+use super::duplication::MaclaurinHigh;
 use super::epsilon::{epsilon_assemble, epsilon_half_period};
 use super::jacobi::{Jacobi, assemble, jacobi_special, sncndn_half_period};
 use super::landen::{LANDEN_MC, LANDEN_MIN_V, LandenChain};
@@ -43,7 +43,7 @@ pub struct FixedModulus {
     period: Period,
     e: (f64, f64),
     kp: f64,
-    series: Maclaurin,
+    series: MaclaurinHigh,
     landen: Option<LandenChain>,
 }
 
@@ -68,7 +68,7 @@ impl FixedModulus {
             period,
             e: ellip_e_dd(modulus),
             kp: mc.sqrt(),
-            series: Maclaurin::new(m, mc),
+            series: MaclaurinHigh::new(m, mc),
             landen,
         }
     }

@@ -93,32 +93,42 @@
 //!   ε(u + 2jK) = ε(u) + 2jE.
 //!
 //! # Accuracy
-//! Measured against mpmath (50 + |log₁₀ m₁| digits) on 2012 moduli (a grid
+//! Measured against mpmath (50 + |log₁₀ m₁| digits) on 3512 moduli (a grid
 //! of extremes: m = 0, 1e-300, 1e-20, 1e-10, 0.5, 0.9, 0.99 and
-//! m₁ = 1e-5, 1e-10, 1e-15, 2⁻⁵², 1e-300, plus 2000 random moduli log-uniform
-//! in m ∈ [1e-20, 1] or m₁ ∈ [1e-300, 1]), 2120 (φ, m) points with
-//! |φ| ≤ 100 (incl. fl(π/2)) and 2203 (u, m) points with |u| ≤ 1e4 (incl.
-//! fl(K), fl(2K), 101·fl(K)). Errors in ulps of the true value; "norm." is
-//! the error divided by 1 + the relative condition number |x f′(x)/f(x)| in
-//! φ or u, since rounding the input alone moves f by that many half-ulps.
+//! m₁ = 1e-5, 1e-10, 1e-15, 2⁻⁵², 1e-300, 2000 random moduli log-uniform
+//! in m ∈ [1e-20, 1] or m₁ ∈ [1e-300, 1], 1500 with m₁ ∈ [1e-14, 1e-2]),
+//! 4620 (φ, m) points with |φ| ≤ 1e4 (incl. fl(π/2), 1500 with
+//! m₁ ∈ [1e-12, 1e-3], 1000 beyond 10π) and 5254 (u, m) points with
+//! |u| ≤ 1e4 (incl. fl(K), fl(2K), 101·fl(K), and 3051 with
+//! m₁ ∈ [1e-12, 1e-3], K/2 ≤ |u| ≤ 4K). Errors in ulps of the true value;
+//! "norm." is the error divided by 1 + the relative condition number
+//! |x f′(x)/f(x)| in φ or u, since rounding the input alone moves f by that
+//! many half-ulps.
 //!
 //! | function | median | p99 | max | median (norm.) | p99 (norm.) | max (norm.) |
 //! |---|---|---|---|---|---|---|
-//! | K | 0.18 | 0.64 | 0.88 | – | – | – |
-//! | E | 0.02 | 0.35 | 0.48 | – | – | – |
-//! | F(φ) | 0.31 | 1.26 | 1.83 | 0.17 | 0.79 | 1.18 |
-//! | E(φ) | 0.21 | 1.29 | 2.76 | 0.11 | 0.65 | 1.38 |
-//! | sn | 0.22 | 568 | 1.2e17 | 0.05 | 0.80 | 1.18 |
-//! | cn | 0.28 | 2.3e15 | 1.0e17 | 0.09 | 0.64 | 2.38 |
-//! | dn | 0.17 | 1562 | 4746 | 0.10 | 0.60 | 1.73 |
-//! | am | 0.19 | 1.91 | 23 | 0.14 | 0.69 | 1.25 |
-//! | ε | 0.15 | 1.17 | 37 | 0.08 | 0.75 | 1.08 |
+//! | K | 0.18 | 0.59 | 0.74 | – | – | – |
+//! | E | 0.14 | 0.49 | 0.50 | – | – | – |
+//! | F(φ) | 0.28 | 1.16 | 3.85 | 0.18 | 0.79 | 1.07 |
+//! | E(φ) | 0.23 | 1.17 | 2.76 | 0.12 | 0.66 | 1.38 |
+//! | sn | 0.17 | 261 | 1.5e16 | 0.08 | 0.52 | 1.18 |
+//! | cn | 0.70 | 5.2e13 | 2.4e16 | 0.05 | 0.47 | 1.16 |
+//! | dn | 0.39 | 35 | 145 | 0.05 | 0.47 | 0.89 |
+//! | am | 0.20 | 1.01 | 2.50 | 0.14 | 0.58 | 1.25 |
+//! | ε | 0.19 | 1.06 | 1.58 | 0.12 | 0.97 | 1.58 |
+//!
+//! [`FixedModulus`] measures the same. The m-derivatives (tables by
+//! `python3 tests/data/gen_special_dm.py`, normalised by their condition
+//! numbers in m and in φ or u): dK/dm ≤ 1.84, dE/dm ≤ 1.71 ulp;
+//! ∂F/∂m ≤ 1.40, ∂E(φ)/∂m ≤ 1.35, ∂sn/∂m ≤ 2.00, ∂cn/∂m ≤ 2.09,
+//! ∂dn/∂m ≤ 1.47, ∂am/∂m ≤ 2.02 ulp norm.
 //!
 //! The huge raw errors are at zeros of sn and cn for large u (u = 2jK
 //! rounded to a double is not a zero) and are what the condition number
 //! predicts; no NaN occurs. Reproduce with
 //! `cargo test --release --test special -- --nocapture accuracy`
-//! (tables: `python3 tests/data/gen_special.py`).
+//! (tables: `python3 tests/data/gen_special.py`). `docs/ACCURACY.md` has
+//! the full tables and what changed.
 //!
 //! # Performance
 //! ns per call on the project's shared 2-core Xeon (x86-64 baseline, no
@@ -163,6 +173,8 @@ mod fixed;
 mod incomplete;
 mod jacobi;
 mod landen;
+#[rustfmt::skip]
+mod maclaurin_coeffs;
 mod modulus;
 mod period;
 mod poly;
