@@ -125,11 +125,77 @@ pub(crate) fn sncndn_half_period(
     }
 }
 
+/// atan2(s, c) for s ≥ 0, c > 0 (an angle in [0, π/2)), inline: fdlibm's
+/// `atan` (reduction to |x| < 7/16 about atan ½, atan 1, atan 3/2 or π/2,
+/// then an odd polynomial of degree 23) applied to x = s/c without forming
+/// s/c: each reduced argument (a x − b)/(c₀ + d x) is taken as
+/// (a s − b c)/(c₀ c + d s), one division in all. Branch-free but for c ≤ 0
+/// (a hair beyond K after rounding), which takes libm's `atan2`.
+/// am keeps its accuracy (≤ 1.25 ulp normalised over the Jacobi table, as
+/// with libm's atan2), and am no longer costs ~17 ns of a 42 ns
+/// `FixedModulus::jacobi` (7 of ~90 in a single `jacobi` call).
+#[inline(always)]
+pub(crate) fn atan2_first_quadrant(s: f64, c: f64) -> f64 {
+    // fdlibm s_atan.c: atanhi/atanlo and aT[0..10].
+    const HI: [f64; 5] = [
+        0.0,
+        4.636_476_090_008_060_935_15e-1,
+        7.853_981_633_974_482_789_99e-1,
+        9.827_937_232_473_290_540_82e-1,
+        1.570_796_326_794_896_558_00,
+    ];
+    const LO: [f64; 5] = [
+        0.0,
+        2.269_877_745_296_168_709_24e-17,
+        3.061_616_997_868_383_017_93e-17,
+        1.390_331_103_123_099_845_16e-17,
+        6.123_233_995_736_766_035_87e-17,
+    ];
+    // x' = (A s − B c)/(C c + D s) per interval of x = s/c:
+    // [0, 7/16): x; [7/16, 11/16): (2x − 1)/(2 + x); [11/16, 19/16): (x − 1)/(x + 1);
+    // [19/16, 39/16): (x − 1.5)/(1 + 1.5x); beyond: −1/x.
+    const A: [f64; 5] = [1.0, 2.0, 1.0, 1.0, 0.0];
+    const B: [f64; 5] = [0.0, 1.0, 1.0, 1.5, 1.0];
+    const C: [f64; 5] = [1.0, 2.0, 1.0, 1.0, 0.0];
+    const D: [f64; 5] = [0.0, 1.0, 1.0, 1.5, 1.0];
+    const AT: [f64; 11] = [
+        3.333_333_333_333_293_180_27e-1,
+        -1.999_999_999_987_648_324_76e-1,
+        1.428_571_427_250_346_637_11e-1,
+        -1.111_111_040_546_235_578_80e-1,
+        9.090_887_133_436_506_561_96e-2,
+        -7.691_876_205_044_829_994_95e-2,
+        6.661_073_137_387_531_206_69e-2,
+        -5.833_570_133_790_573_486_45e-2,
+        4.976_877_994_615_932_360_17e-2,
+        -3.653_157_274_421_691_552_70e-2,
+        1.628_582_011_536_578_236_23e-2,
+    ];
+    if c <= 0.0 || !(s >= 0.0) {
+        return s.atan2(c);
+    }
+    let t = 16.0 * s;
+    let id = usize::from(t >= 7.0 * c)
+        + usize::from(t >= 11.0 * c)
+        + usize::from(t >= 19.0 * c)
+        + usize::from(t >= 39.0 * c);
+    let x = (A[id] * s - B[id] * c) / (C[id] * c + D[id] * s);
+    let z = x * x;
+    let w = z * z;
+    let s1 = z * (AT[0] + w * (AT[2] + w * (AT[4] + w * (AT[6] + w * (AT[8] + w * AT[10])))));
+    let s2 = w * (AT[1] + w * (AT[3] + w * (AT[5] + w * (AT[7] + w * AT[9]))));
+    if id == 0 {
+        x - x * (s1 + s2)
+    } else {
+        HI[id] - ((x * (s1 + s2) - LO[id]) - x)
+    }
+}
+
 /// sn, cn, dn and am at u = 2jK + r from (sn, cn, dn) at |r|.
 #[inline(always)]
 pub(crate) fn assemble(red: &Reduced, (sn, cn, dn): (f64, f64, f64)) -> Jacobi {
     let Reduced { j, odd, r } = *red;
-    let am_r = sn.atan2(cn).copysign(r);
+    let am_r = atan2_first_quadrant(sn, cn).copysign(r);
     let sn = sn.copysign(r);
     let (sn, cn) = if odd { (-sn, -cn) } else { (sn, cn) };
     let am = if j == 0.0 {
@@ -226,4 +292,54 @@ pub fn jacobi(u: f64, modulus: Modulus) -> Jacobi {
         sncndn_quarter(v, m, mc)
     });
     assemble(&red, f)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::atan2_first_quadrant;
+
+    /// The inline atan2 against libm's (≤ 1 ulp itself) on 200 000 points
+    /// of the first quadrant, uniform in angle and near 0 and π/2, and at
+    /// the interval borders x = 7/16, 11/16, 19/16, 39/16: within 2 ulp of
+    /// libm (measured 1.0), so within 3 ulp of the truth; the am table
+    /// (mpmath) bounds the combination more tightly (≤ 1.25 ulp normalised).
+    #[test]
+    fn atan2_first_quadrant_matches_libm() {
+        let mut seed = 12_345_u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut worst: f64 = 0.0;
+        let mut check = |s: f64, c: f64| {
+            let (a, b) = (atan2_first_quadrant(s, c), s.atan2(c));
+            let e = if b == 0.0 {
+                a.abs()
+            } else {
+                ((a - b) / b).abs() / f64::EPSILON
+            };
+            worst = worst.max(e);
+        };
+        for i in 0..200_000 {
+            let theta = match i % 4 {
+                0 | 1 => core::f64::consts::FRAC_PI_2 * next(),
+                2 => 10f64.powf(-12.0 * next()),
+                _ => core::f64::consts::FRAC_PI_2 - 10f64.powf(-12.0 * next()),
+            };
+            let (s, c) = theta.sin_cos();
+            check(s, c);
+        }
+        for x in [7.0 / 16.0, 11.0 / 16.0, 19.0 / 16.0, 39.0 / 16.0] {
+            for k in -4..=4 {
+                let xs = x * (1.0 + f64::from(k) * f64::EPSILON);
+                check(xs, 1.0);
+                check(1.0, 1.0 / xs);
+            }
+        }
+        check(0.0, 1.0);
+        check(1e-300, 1.0);
+        assert!(worst <= 2.0, "worst {worst} ulp against libm");
+    }
 }
