@@ -4,12 +4,12 @@
 use super::landen::{hyperbolic_reach, sncndn_hyperbolic};
 use super::maclaurin_coeffs::{SN, Y, Z};
 
-/// Below this |u| the Maclaurin series (to u¹¹ for sn, u¹⁰ for cn, dn) is
-/// exact to rounding: the first neglected coefficient is ≤ 0.0057 for every
-/// m ∈ [0, 1] (m = 1, sech), and 0.0057 · (1/16)¹² ≈ 2e-17.
-const SERIES_MAX: f64 = 1.0 / 16.0;
+/// Below this |u| the Maclaurin series (to u¹⁵ for sn, u¹⁶ for 1 − cn,
+/// 1 − dn) is exact to rounding: the first neglected terms are ≤ 2.6e-18
+/// relative for every m ∈ [0, 1] (largest at m = 1: tanh, sech).
+const SERIES_MAX: f64 = 1.0 / 8.0;
 
-/// (sn, cn, dn) for 0 ≤ v ≤ K/2: halve to |v| ≤ 1/16, Maclaurin series,
+/// (sn, cn, dn) for 0 ≤ v ≤ K/2: halve to |v| ≤ 1/8, Maclaurin series,
 /// then double back (conditional duplication, after Fukushima 2013).
 ///
 /// While cn and dn are near 1 the doubling carries their complements
@@ -42,8 +42,9 @@ pub(crate) struct Maclaurin<const NS: usize, const NY: usize> {
     mc: f64,
 }
 
-/// To u¹¹ from |u| ≤ 1/16: coefficients cheap enough to form at every call.
-pub(crate) type MaclaurinLow = Maclaurin<5, 5>;
+/// To u¹⁵ (sn) and u¹⁶ (1 − cn, 1 − dn) from |u| ≤ 1/8: coefficients
+/// cheap enough to form at every call.
+pub(crate) type MaclaurinLow = Maclaurin<7, 8>;
 /// To u²² from |u| ≤ 1/4 (two doublings fewer), for [`FixedModulus`]
 /// (crate::special::FixedModulus), which forms its 32 polynomials once.
 pub(crate) type MaclaurinHigh = Maclaurin<10, 11>;
@@ -88,10 +89,63 @@ impl MaclaurinLow {
         let d6 = m * (16.0 + 44.0 * m + m2) * (1.0 / 720.0);
         let d8 = m * (64.0 + 912.0 * m + 408.0 * m2 + m3) * (1.0 / 40320.0);
         let d10 = m * (256.0 + 15808.0 * m + 30768.0 * m2 + 3688.0 * m3 + m4) * (1.0 / 3_628_800.0);
+        // Orders 13–16 (integer coefficients from gen_special_coeffs.py's
+        // Maclaurin polynomials times k!).
+        let (m5, m6, m7) = (m4 * m, m3 * m3, m4 * m3);
+        let s13 = (1.0 + 99642.0 * (m + m5) + 4_494_351.0 * (m2 + m4) + 13_180_268.0 * m3 + m6)
+            * (1.0 / 6_227_020_800.0);
+        let s15 = (1.0
+            + 896_803.0 * (m + m6)
+            + 116_294_673.0 * (m2 + m5)
+            + 834_687_179.0 * (m3 + m4)
+            + m7)
+            * (1.0 / 1_307_674_368_000.0);
+        let c12 =
+            (1.0 + 33212.0 * m + 870_640.0 * m2 + 1_538_560.0 * m3 + 259_328.0 * m4 + 1024.0 * m5)
+                * (1.0 / 479_001_600.0);
+        let c14 = (1.0
+            + 298_932.0 * m
+            + 22_945_056.0 * m2
+            + 106_923_008.0 * m3
+            + 65_008_896.0 * m4
+            + 4_180_992.0 * m5
+            + 4096.0 * m6)
+            * (1.0 / 87_178_291_200.0);
+        let c16 = (1.0
+            + 2_690_416.0 * m
+            + 586_629_984.0 * m2
+            + 6_337_665_152.0 * m3
+            + 9_860_488_448.0 * m4
+            + 2_536_974_336.0 * m5
+            + 67_047_424.0 * m6
+            + 16384.0 * m7)
+            * (1.0 / 20_922_789_888_000.0);
+        let d12 = m
+            * (1024.0 + 259_328.0 * m + 1_538_560.0 * m2 + 870_640.0 * m3 + 33212.0 * m4 + m5)
+            * (1.0 / 479_001_600.0);
+        let d14 = m
+            * (4096.0
+                + 4_180_992.0 * m
+                + 65_008_896.0 * m2
+                + 106_923_008.0 * m3
+                + 22_945_056.0 * m4
+                + 298_932.0 * m5
+                + m6)
+            * (1.0 / 87_178_291_200.0);
+        let d16 = m
+            * (16384.0
+                + 67_047_424.0 * m
+                + 2_536_974_336.0 * m2
+                + 9_860_488_448.0 * m3
+                + 6_337_665_152.0 * m4
+                + 586_629_984.0 * m5
+                + 2_690_416.0 * m6
+                + m7)
+            * (1.0 / 20_922_789_888_000.0);
         Self {
-            s: [-(1.0 + m) * (1.0 / 6.0), s5, -s7, s9, -s11],
-            y: [0.5, -c4, c6, -c8, c10],
-            z: [0.5 * m, -d4, d6, -d8, d10],
+            s: [-(1.0 + m) * (1.0 / 6.0), s5, -s7, s9, -s11, s13, -s15],
+            y: [0.5, -c4, c6, -c8, c10, -c12, c14, -c16],
+            z: [0.5 * m, -d4, d6, -d8, d10, -d12, d14, -d16],
             max: SERIES_MAX,
             m,
             mc,
@@ -171,7 +225,7 @@ const HYPERBOLIC_MC: f64 = 1.0 / (1u64 << 30) as f64;
 /// m₁ e^{2v} ≤ 2⁻²⁴, i.e. v ≤ v₀ = ½ ln(2⁻²⁴/m₁) ≥ 2. Larger v are halved
 /// to ≤ v₀ and doubled back with cn carried directly (cn ≤ sech 2 there)
 /// and dn = √(cn² + m₁ sn²). Starting the doubling at v₀ ≥ 2 rather than
-/// at 1/16 matters: each step adds ~2 ulp to cn and doubles what came
+/// at 1/8 matters: each step adds ~2 ulp to cn and doubles what came
 /// before, which the condition number (~v) absorbs only from a large start.
 /// For m₁ < 2⁻⁶⁰, v₀ ≥ 12.5 > K/2 and no doubling happens.
 fn sncndn_near_one(v: f64, mc: f64) -> (f64, f64, f64) {

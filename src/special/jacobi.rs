@@ -248,7 +248,7 @@ pub(crate) fn jacobi_special(u: f64, m: f64, mc: f64) -> Option<Jacobi> {
 /// the quarter-period shift (DLMF 22.4.3) maps to K − |r| ∈ [0, K/2];
 /// there, for m₁ ≤ 0.1 and v ≥ 1, ascending Landen steps (DLMF 22.7.4–7)
 /// down to the expansion about m = 1 (DLMF 22.10.4–6); otherwise the
-/// argument is halved to ≤ 1/16, the Maclaurin series (DLMF 22.10.1–3)
+/// argument is halved to ≤ 1/8, the Maclaurin series (DLMF 22.10.1–3)
 /// evaluated and the duplication formulas (DLMF 22.8.20, written without
 /// cancellation, carrying 1 − cn and 1 − dn while small) applied back. am
 /// is atan2(sn, cn) on [−K, K] plus jπ, so it is continuous and increasing.

@@ -65,8 +65,10 @@
 //!     the doubling it replaces accumulated ~1.5 ulp per step, each
 //!     doubled by the later ones, and reached 8 ulp normalised in cn and
 //!     dn near m₁ ~ 1e-8 and v ~ K/2 (issue 9).
-//!   - otherwise the argument is halved to ≤ 1/16, expanded in Maclaurin
-//!     series (to u¹¹) and doubled back (at most four steps for v < 1),
+//!   - otherwise the argument is halved to ≤ 1/8, expanded in Maclaurin
+//!     series (to u¹⁵; [`FixedModulus`] to u²² from ≤ 1/4, its 32
+//!     m-polynomials formed once) and doubled back (at most three steps
+//!     for v < 1),
 //!     carrying 1 − cn and 1 − dn while they are below ½ (Fukushima's
 //!     conditional duplication) and written so that every step adds
 //!     positive terms; for m₁ < 2⁻³⁰ (v < 1) the expansion about m = 1

@@ -29,8 +29,9 @@ import random
 import sys
 from mpmath import mp, mpf, ellipk, ellipe, ellipf, ellipfun, atan2, pi, nint, sin, cos, sqrt, diff
 
+from gen_special import hl, loguniform, write  # same directory
+
 SEED = 20261123
-OUT = "tests/data/"
 
 
 def setprec(kind, x):
@@ -45,16 +46,6 @@ def setprec(kind, x):
 def mod(kind, x):
     x = mpf(x)
     return (x, 1 - x) if kind == "m" else (1 - x, x)
-
-
-def hl(v):
-    hi = float(v)
-    lo = float(v - mpf(hi))
-    return f"{hi!r}\t{lo!r}"
-
-
-def loguniform(rng, lo, hi):
-    return 10.0 ** rng.uniform(math.log10(lo), math.log10(hi))
 
 
 def moduli(rng, n):
@@ -186,13 +177,6 @@ def jacobi(rng):
         cs = "\t".join(repr(float(c)) for c in conds)
         rows.append(f"{kind}\t{x!r}\t{u!r}\t{vals}\t{cs}")
     return rows
-
-
-def write(name, header, rows):
-    with open(OUT + name, "w") as f:
-        f.write(header + "\n")
-        for r in rows:
-            f.write(r + "\n")
 
 
 def main():

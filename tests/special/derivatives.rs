@@ -12,33 +12,13 @@ use hockle::special::{
 };
 use proptest::prelude::*;
 
-use super::table::{line, read, stats, ulps_dd};
+use super::table::{line, read, report, stats, ulps_dd, worst};
 
 /// Bar for dK/dm, dE/dm: ≤ 2 ulp (one R_D or a benign closed form in K, E).
 const BAR_COMPLETE_DM: f64 = 2.0;
 /// Bar for the other derivatives, normalised: ≤ 4 ulp (a value of the
 /// function, one R_D and two or three products).
 const BAR_DM: f64 = 4.0;
-
-fn report(title: &str, lines: &[String]) {
-    println!("\n{title}");
-    println!(
-        "| derivative | n | median | p99 | max | median (norm.) | p99 (norm.) | max (norm.) |"
-    );
-    println!("|---|---|---|---|---|---|---|---|");
-    for l in lines {
-        println!("{l}");
-    }
-}
-
-fn worst(name: &str, errs: &[f64], ctx: &[String]) {
-    let (i, e) = errs
-        .iter()
-        .enumerate()
-        .max_by(|a, b| a.1.total_cmp(b.1))
-        .expect("non-empty");
-    println!("  worst {name}: {e:.2} ulp at {}", ctx[i]);
-}
 
 #[test]
 fn accuracy_dm_complete() {
@@ -52,6 +32,7 @@ fn accuracy_dm_complete() {
     let (sk, se) = (stats(&ek), stats(&ee));
     report(
         "m-derivatives of K, E (ulps)",
+        "derivative",
         &[line("dK/dm", &sk, None), line("dE/dm", &se, None)],
     );
     worst("dK/dm", &ek, &ctx);
@@ -78,6 +59,7 @@ fn accuracy_dm_incomplete() {
     let s: Vec<_> = (0..2).map(|i| (stats(&raw[i]), stats(&norm[i]))).collect();
     report(
         "m-derivatives of F, E(φ) (ulps)",
+        "derivative",
         &(0..2)
             .map(|i| line(names[i], &s[i].0, Some(&s[i].1)))
             .collect::<Vec<_>>(),
@@ -112,6 +94,7 @@ fn accuracy_dm_jacobi() {
     let s: Vec<_> = (0..4).map(|i| (stats(&raw[i]), stats(&norm[i]))).collect();
     report(
         "m-derivatives of sn, cn, dn, am at fixed u (ulps)",
+        "derivative",
         &(0..4)
             .map(|i| line(names[i], &s[i].0, Some(&s[i].1)))
             .collect::<Vec<_>>(),
