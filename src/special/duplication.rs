@@ -45,8 +45,8 @@ pub(crate) struct Maclaurin<const NS: usize, const NY: usize> {
 /// To u¹⁵ (sn) and u¹⁶ (1 − cn, 1 − dn) from |u| ≤ 1/8: coefficients
 /// cheap enough to form at every call.
 pub(crate) type MaclaurinLow = Maclaurin<7, 8>;
-/// To u²² from |u| ≤ 1/4 (two doublings fewer), for [`FixedModulus`]
-/// (crate::special::FixedModulus), which forms its 32 polynomials once.
+/// To u²² from |u| ≤ 1/4 (one doubling fewer), for `FixedModulus`,
+/// which forms its 32 polynomials once.
 pub(crate) type MaclaurinHigh = Maclaurin<10, 11>;
 
 /// Below this |u| the order-22 series is exact to rounding: its first

@@ -113,13 +113,13 @@
 //! | E | 0.14 | 0.49 | 0.50 | – | – | – |
 //! | F(φ) | 0.28 | 1.16 | 3.85 | 0.18 | 0.79 | 1.07 |
 //! | E(φ) | 0.23 | 1.17 | 2.76 | 0.12 | 0.66 | 1.38 |
-//! | sn | 0.17 | 261 | 1.5e16 | 0.08 | 0.52 | 1.18 |
-//! | cn | 0.70 | 5.2e13 | 2.4e16 | 0.05 | 0.47 | 1.16 |
-//! | dn | 0.39 | 35 | 145 | 0.05 | 0.47 | 0.89 |
-//! | am | 0.20 | 1.01 | 2.50 | 0.14 | 0.58 | 1.25 |
-//! | ε | 0.19 | 1.06 | 1.58 | 0.12 | 0.97 | 1.58 |
+//! | sn | 0.17 | 261 | 1.5e16 | 0.08 | 0.50 | 1.06 |
+//! | cn | 0.68 | 5.2e13 | 2.4e16 | 0.05 | 0.45 | 1.16 |
+//! | dn | 0.39 | 35 | 144 | 0.05 | 0.47 | 0.89 |
+//! | am | 0.20 | 1.03 | 2.15 | 0.14 | 0.58 | 1.08 |
+//! | ε | 0.19 | 1.05 | 1.58 | 0.12 | 0.96 | 1.58 |
 //!
-//! [`FixedModulus`] measures the same. The m-derivatives (tables by
+//! [`FixedModulus`] measures the same or better (am 0.95). The m-derivatives (tables by
 //! `python3 tests/data/gen_special_dm.py`, normalised by their condition
 //! numbers in m and in φ or u): dK/dm ≤ 1.84, dE/dm ≤ 1.71 ulp;
 //! ∂F/∂m ≤ 1.40, ∂E(φ)/∂m ≤ 1.35, ∂sn/∂m ≤ 2.00, ∂cn/∂m ≤ 2.09,
@@ -135,18 +135,21 @@
 //! # Performance
 //! ns per call on the project's shared 2-core Xeon (x86-64 baseline, no
 //! FMA), interleaved minimum over 1024 inputs, with `ellip` 1.2.3 in the
-//! same run; "extreme" is m₁ = 10^−U(0,15), φ = π/2 − 10^−U(0,8):
+//! same run, under load (load average ~5; idle figures are ~15% lower, see
+//! `docs/PERFORMANCE.md`); "extreme" is m₁ = 10^−U(0,15),
+//! φ = π/2 − 10^−U(0,8), u ∈ [0, 100]:
 //!
 //! | function | uniform | ellip | extreme | ellip |
 //! |---|---|---|---|---|
-//! | K | 6.6 | 11.0 | 9.6 | 21.4 |
-//! | E | 6.3 | 11.5 | 9.3 | 30.5 |
-//! | F(φ) | 35.7 | 60.4 | 51.2 | 87.6 |
-//! | E(φ) | 59.9 | 95.4 | 75.9 | 120.9 |
-//! | jacobi | 95.8 | – | 104.0 | – |
+//! | K | 7.2 | 12.4 | 12.5 | 21.1 |
+//! | E | 7.0 | 13.3 | 9.7 | 36.8 |
+//! | F(φ) | 42.2 | 73.2 | 59.1 | 113.5 |
+//! | E(φ) | 60.0 | 109.0 | 77.9 | 137.6 |
+//! | jacobi | 86.3 | – | 105.8 | – |
+//! | [`FixedModulus::jacobi`] (128 u per modulus) | 24.8 | – | 32.4 | – |
 //!
-//! Reproduce with `cargo bench --bench special -- --warm-up-time 0.5
-//! --measurement-time 1`; criterion's means and the history are in
+//! Reproduce with `cargo bench --bench special -- --warm-up-time 1
+//! --measurement-time 2`; criterion's means and the history are in
 //! `docs/PERFORMANCE.md`.
 //!
 //! # Errors
