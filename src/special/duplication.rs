@@ -168,7 +168,21 @@ impl<const NS: usize, const NY: usize> Maclaurin<NS, NY> {
             n += 1;
         }
         let x2 = x * x;
-        let horner = |a: &[f64]| a.iter().rev().fold(0.0, |acc, &c| c + x2 * acc);
+        let x4 = x2 * x2;
+        // Estrin: pairs (a₂ₖ + a₂ₖ₊₁ x²) by Horner in x⁴, half the chain.
+        let horner = |a: &[f64]| {
+            let mut acc = 0.0;
+            let mut k = a.len();
+            if k % 2 == 1 {
+                k -= 1;
+                acc = a[k];
+            }
+            while k > 0 {
+                k -= 2;
+                acc = (a[k] + a[k + 1] * x2) + x4 * acc;
+            }
+            acc
+        };
         let mut sn = x * (1.0 + x2 * horner(&self.s));
         // y = 1 − cn, z = 1 − dn.
         let mut y = x2 * horner(&self.y);
