@@ -135,18 +135,17 @@
 //! # Performance
 //! ns per call on the project's shared 2-core Xeon (x86-64 baseline, no
 //! FMA), interleaved minimum over 1024 inputs, with `ellip` 1.2.3 in the
-//! same run, under load (load average ~5; idle figures are ~15% lower, see
-//! `docs/PERFORMANCE.md`); "extreme" is m₁ = 10^−U(0,15),
+//! same run (load average ~2.5); "extreme" is m₁ = 10^−U(0,15),
 //! φ = π/2 − 10^−U(0,8), u ∈ [0, 100]:
 //!
 //! | function | uniform | ellip | extreme | ellip |
 //! |---|---|---|---|---|
-//! | K | 7.2 | 12.4 | 12.5 | 21.1 |
-//! | E | 7.0 | 13.3 | 9.7 | 36.8 |
-//! | F(φ) | 42.2 | 73.2 | 59.1 | 113.5 |
-//! | E(φ) | 60.0 | 109.0 | 77.9 | 137.6 |
-//! | jacobi | 86.3 | – | 105.8 | – |
-//! | [`FixedModulus::jacobi`] (128 u per modulus) | 24.8 | – | 32.4 | – |
+//! | K | 6.8 | 11.6 | 11.9 | 20.7 |
+//! | E | 6.8 | 12.8 | 9.3 | 35.5 |
+//! | F(φ) | 40.7 | 68.9 | 56.7 | 95.7 |
+//! | E(φ) | 57.9 | 105.0 | 74.3 | 131.6 |
+//! | jacobi | 76.9 | – | 100.2 | – |
+//! | [`FixedModulus::jacobi`] (128 u per modulus) | 20.5 | – | 30.5 | – |
 //!
 //! Reproduce with `cargo bench --bench special -- --warm-up-time 1
 //! --measurement-time 2`; criterion's means and the history are in
