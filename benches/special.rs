@@ -327,10 +327,80 @@ fn interleaved() {
     }
 }
 
+/// Solving cn(u₀ | m) = c₀ for m (the kind of equation the elastica solves
+/// in its modulus), from m = 0.5, to |Δm| ≤ 1e-14: Newton with the
+/// derivative from `jacobi_dm` against the secant method (no derivative,
+/// second start at 0.5 + 1e-3). Targets from m* ∈ [0.05, 0.95], u₀ ∈ [0.3, 1.5]
+/// (cn decreasing in m there, one root). Prints ns per solve and the mean
+/// number of evaluations.
+fn newton_in_m() {
+    let mut g = Lcg(7);
+    let cases: Vec<(f64, f64)> = (0..256)
+        .map(|_| {
+            let (ms, u0) = (0.05 + 0.9 * g.next(), 0.3 + 1.2 * g.next());
+            (u0, jacobi(u0, Modulus::from_m(ms).unwrap()).cn)
+        })
+        .collect();
+    let clamp = |m: f64| m.clamp(1e-6, 1.0 - 1e-6);
+    let newton = |(u0, c0): (f64, f64)| -> (f64, u32) {
+        let mut m = 0.5;
+        for it in 1..=60 {
+            let (j, d) = hockle::special::jacobi_dm(u0, Modulus::from_m(m).unwrap());
+            let step = (j.cn - c0) / d.cn;
+            m = clamp(m - step);
+            if step.abs() <= 1e-14 {
+                return (m, it);
+            }
+        }
+        (m, 60)
+    };
+    let secant = |(u0, c0): (f64, f64)| -> (f64, u32) {
+        let f = |m: f64| jacobi(u0, Modulus::from_m(m).unwrap()).cn - c0;
+        let (mut a, mut b) = (0.5, 0.501);
+        let (mut fa, mut fb) = (f(a), f(b));
+        for it in 2..=60 {
+            if fb == fa {
+                return (b, it);
+            }
+            let c = clamp(b - fb * (b - a) / (fb - fa));
+            (a, fa) = (b, fb);
+            b = c;
+            fb = f(b);
+            if (b - a).abs() <= 1e-14 {
+                return (b, it + 1);
+            }
+        }
+        (b, 60)
+    };
+    for (name, solve) in [
+        (
+            "Newton (jacobi_dm)",
+            &newton as &dyn Fn((f64, f64)) -> (f64, u32),
+        ),
+        ("secant", &secant),
+    ] {
+        let mut best = f64::INFINITY;
+        let mut evals = 0;
+        for _ in 0..50 {
+            let t = Instant::now();
+            evals = cases
+                .iter()
+                .map(|&c| black_box(solve(black_box(c))).1)
+                .sum::<u32>();
+            best = best.min(t.elapsed().as_secs_f64() * 1e9 / cases.len() as f64);
+        }
+        println!(
+            "  solve cn(u0|m) = c0 for m, {name}: {best:.0} ns per solve, {:.2} evaluations",
+            f64::from(evals) / cases.len() as f64
+        );
+    }
+}
+
 criterion_group!(benches, bench);
 
 fn main() {
     interleaved();
+    newton_in_m();
     benches();
     Criterion::default().configure_from_args().final_summary();
 }

@@ -2,13 +2,14 @@
 //! duplication (crate-private).
 
 use super::landen::{hyperbolic_reach, sncndn_hyperbolic};
+use super::maclaurin_coeffs::{SN, Y, Z};
 
-/// Below this |u| the Maclaurin series (to u¹¹ for sn, u¹⁰ for cn, dn) is
-/// exact to rounding: the first neglected coefficient is ≤ 0.0057 for every
-/// m ∈ [0, 1] (m = 1, sech), and 0.0057 · (1/16)¹² ≈ 2e-17.
-const SERIES_MAX: f64 = 1.0 / 16.0;
+/// Below this |u| the Maclaurin series (to u¹⁵ for sn, u¹⁶ for 1 − cn,
+/// 1 − dn) is exact to rounding: the first neglected terms are ≤ 2.6e-18
+/// relative for every m ∈ [0, 1] (largest at m = 1: tanh, sech).
+const SERIES_MAX: f64 = 1.0 / 8.0;
 
-/// (sn, cn, dn) for 0 ≤ v ≤ K/2: halve to |v| ≤ 1/16, Maclaurin series,
+/// (sn, cn, dn) for 0 ≤ v ≤ K/2: halve to |v| ≤ 1/8, Maclaurin series,
 /// then double back (conditional duplication, after Fukushima 2013).
 ///
 /// While cn and dn are near 1 the doubling carries their complements
@@ -24,48 +25,135 @@ const SERIES_MAX: f64 = 1.0 / 16.0;
 /// dn(2v)     = √(cn²(2v) + m₁ sn²(2v))       (once dn < ½, which needs cn < ½)
 /// ```
 pub(crate) fn sncndn_small(v: f64, m: f64, mc: f64) -> (f64, f64, f64) {
-    Maclaurin::new(m, mc).eval(v)
+    MaclaurinLow::new(m, mc).eval(v)
 }
 
 /// The Maclaurin coefficients of sn, 1 − cn and 1 − dn at one modulus
-/// (DLMF 22.10.1–3), in x² after the leading term, signs included.
+/// (DLMF 22.10.1–3), in x² after the leading term, signs included: `NS`
+/// terms for sn (from u³), `NY` for 1 − cn and 1 − dn (from u²), exact to
+/// rounding for |u| ≤ `max`.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Maclaurin {
-    s: [f64; 5],
-    y: [f64; 5],
-    z: [f64; 5],
+pub(crate) struct Maclaurin<const NS: usize, const NY: usize> {
+    s: [f64; NS],
+    y: [f64; NY],
+    z: [f64; NY],
+    max: f64,
     m: f64,
     mc: f64,
 }
 
-impl Maclaurin {
+/// To u¹⁵ (sn) and u¹⁶ (1 − cn, 1 − dn) from |u| ≤ 1/8: coefficients
+/// cheap enough to form at every call.
+pub(crate) type MaclaurinLow = Maclaurin<7, 8>;
+/// To u²² from |u| ≤ 1/4 (one doubling fewer), for `FixedModulus`,
+/// which forms its 32 polynomials once.
+pub(crate) type MaclaurinHigh = Maclaurin<10, 11>;
+
+/// Below this |u| the order-22 series is exact to rounding: its first
+/// neglected terms are ≤ 2.3e-18 relative for every m ∈ [0, 1]
+/// (`tests/data/gen_special_coeffs.py`).
+const SERIES_MAX_HIGH: f64 = 0.25;
+
+impl MaclaurinHigh {
+    /// The coefficients from their exact polynomials in m (generated).
+    pub(crate) fn new(m: f64, mc: f64) -> Self {
+        let at = |p: &[f64]| p.iter().rev().fold(0.0, |acc, &c| c + m * acc);
+        Self {
+            s: SN.map(at),
+            y: Y.map(at),
+            z: Z.map(at),
+            max: SERIES_MAX_HIGH,
+            m,
+            mc,
+        }
+    }
+}
+
+impl MaclaurinLow {
     #[inline(always)]
     pub(crate) fn new(m: f64, mc: f64) -> Self {
         let m2 = m * m;
         let m3 = m2 * m;
         let m4 = m2 * m2;
-        let s5 = (1.0 + 14.0 * m + m2) / 120.0;
-        let s7 = (1.0 + 135.0 * m + 135.0 * m2 + m3) / 5040.0;
-        let s9 = (1.0 + 1228.0 * m + 5478.0 * m2 + 1228.0 * m3 + m4) / 362_880.0;
-        let s11 =
-            (1.0 + 11069.0 * m + 165_826.0 * (m2 + m3) + 11069.0 * m4 + m4 * m) / 39_916_800.0;
-        let c4 = (1.0 + 4.0 * m) / 24.0;
-        let c6 = (1.0 + 44.0 * m + 16.0 * m2) / 720.0;
-        let c8 = (1.0 + 408.0 * m + 912.0 * m2 + 64.0 * m3) / 40320.0;
-        let c10 = (1.0 + 3688.0 * m + 30768.0 * m2 + 15808.0 * m3 + 256.0 * m4) / 3_628_800.0;
-        let d4 = m * (4.0 + m) / 24.0;
-        let d6 = m * (16.0 + 44.0 * m + m2) / 720.0;
-        let d8 = m * (64.0 + 912.0 * m + 408.0 * m2 + m3) / 40320.0;
-        let d10 = m * (256.0 + 15808.0 * m + 30768.0 * m2 + 3688.0 * m3 + m4) / 3_628_800.0;
+        let s5 = (1.0 + 14.0 * m + m2) * (1.0 / 120.0);
+        let s7 = (1.0 + 135.0 * m + 135.0 * m2 + m3) * (1.0 / 5040.0);
+        let s9 = (1.0 + 1228.0 * m + 5478.0 * m2 + 1228.0 * m3 + m4) * (1.0 / 362_880.0);
+        let s11 = (1.0 + 11069.0 * m + 165_826.0 * (m2 + m3) + 11069.0 * m4 + m4 * m)
+            * (1.0 / 39_916_800.0);
+        let c4 = (1.0 + 4.0 * m) * (1.0 / 24.0);
+        let c6 = (1.0 + 44.0 * m + 16.0 * m2) * (1.0 / 720.0);
+        let c8 = (1.0 + 408.0 * m + 912.0 * m2 + 64.0 * m3) * (1.0 / 40320.0);
+        let c10 =
+            (1.0 + 3688.0 * m + 30768.0 * m2 + 15808.0 * m3 + 256.0 * m4) * (1.0 / 3_628_800.0);
+        let d4 = m * (4.0 + m) * (1.0 / 24.0);
+        let d6 = m * (16.0 + 44.0 * m + m2) * (1.0 / 720.0);
+        let d8 = m * (64.0 + 912.0 * m + 408.0 * m2 + m3) * (1.0 / 40320.0);
+        let d10 = m * (256.0 + 15808.0 * m + 30768.0 * m2 + 3688.0 * m3 + m4) * (1.0 / 3_628_800.0);
+        // Orders 13–16 (integer coefficients from gen_special_coeffs.py's
+        // Maclaurin polynomials times k!).
+        let (m5, m6, m7) = (m4 * m, m3 * m3, m4 * m3);
+        let s13 = (1.0 + 99642.0 * (m + m5) + 4_494_351.0 * (m2 + m4) + 13_180_268.0 * m3 + m6)
+            * (1.0 / 6_227_020_800.0);
+        let s15 = (1.0
+            + 896_803.0 * (m + m6)
+            + 116_294_673.0 * (m2 + m5)
+            + 834_687_179.0 * (m3 + m4)
+            + m7)
+            * (1.0 / 1_307_674_368_000.0);
+        let c12 =
+            (1.0 + 33212.0 * m + 870_640.0 * m2 + 1_538_560.0 * m3 + 259_328.0 * m4 + 1024.0 * m5)
+                * (1.0 / 479_001_600.0);
+        let c14 = (1.0
+            + 298_932.0 * m
+            + 22_945_056.0 * m2
+            + 106_923_008.0 * m3
+            + 65_008_896.0 * m4
+            + 4_180_992.0 * m5
+            + 4096.0 * m6)
+            * (1.0 / 87_178_291_200.0);
+        let c16 = (1.0
+            + 2_690_416.0 * m
+            + 586_629_984.0 * m2
+            + 6_337_665_152.0 * m3
+            + 9_860_488_448.0 * m4
+            + 2_536_974_336.0 * m5
+            + 67_047_424.0 * m6
+            + 16384.0 * m7)
+            * (1.0 / 20_922_789_888_000.0);
+        let d12 = m
+            * (1024.0 + 259_328.0 * m + 1_538_560.0 * m2 + 870_640.0 * m3 + 33212.0 * m4 + m5)
+            * (1.0 / 479_001_600.0);
+        let d14 = m
+            * (4096.0
+                + 4_180_992.0 * m
+                + 65_008_896.0 * m2
+                + 106_923_008.0 * m3
+                + 22_945_056.0 * m4
+                + 298_932.0 * m5
+                + m6)
+            * (1.0 / 87_178_291_200.0);
+        let d16 = m
+            * (16384.0
+                + 67_047_424.0 * m
+                + 2_536_974_336.0 * m2
+                + 9_860_488_448.0 * m3
+                + 6_337_665_152.0 * m4
+                + 586_629_984.0 * m5
+                + 2_690_416.0 * m6
+                + m7)
+            * (1.0 / 20_922_789_888_000.0);
         Self {
-            s: [-(1.0 + m) / 6.0, s5, -s7, s9, -s11],
-            y: [0.5, -c4, c6, -c8, c10],
-            z: [0.5 * m, -d4, d6, -d8, d10],
+            s: [-(1.0 + m) * (1.0 / 6.0), s5, -s7, s9, -s11, s13, -s15],
+            y: [0.5, -c4, c6, -c8, c10, -c12, c14, -c16],
+            z: [0.5 * m, -d4, d6, -d8, d10, -d12, d14, -d16],
+            max: SERIES_MAX,
             m,
             mc,
         }
     }
+}
 
+impl<const NS: usize, const NY: usize> Maclaurin<NS, NY> {
     /// (sn, cn, dn) at 0 ≤ v ≤ K/2, as described at [`sncndn_small`].
     #[inline(always)]
     pub(crate) fn eval(&self, v: f64) -> (f64, f64, f64) {
@@ -75,12 +163,26 @@ impl Maclaurin {
         }
         let mut n = 0;
         let mut x = v;
-        while x > SERIES_MAX {
+        while x > self.max {
             x *= 0.5;
             n += 1;
         }
         let x2 = x * x;
-        let horner = |a: &[f64; 5]| a[0] + x2 * (a[1] + x2 * (a[2] + x2 * (a[3] + x2 * a[4])));
+        let x4 = x2 * x2;
+        // Estrin: pairs (a₂ₖ + a₂ₖ₊₁ x²) by Horner in x⁴, half the chain.
+        let horner = |a: &[f64]| {
+            let mut acc = 0.0;
+            let mut k = a.len();
+            if k % 2 == 1 {
+                k -= 1;
+                acc = a[k];
+            }
+            while k > 0 {
+                k -= 2;
+                acc = (a[k] + a[k + 1] * x2) + x4 * acc;
+            }
+            acc
+        };
         let mut sn = x * (1.0 + x2 * horner(&self.s));
         // y = 1 − cn, z = 1 − dn.
         let mut y = x2 * horner(&self.y);
@@ -137,7 +239,7 @@ const HYPERBOLIC_MC: f64 = 1.0 / (1u64 << 30) as f64;
 /// m₁ e^{2v} ≤ 2⁻²⁴, i.e. v ≤ v₀ = ½ ln(2⁻²⁴/m₁) ≥ 2. Larger v are halved
 /// to ≤ v₀ and doubled back with cn carried directly (cn ≤ sech 2 there)
 /// and dn = √(cn² + m₁ sn²). Starting the doubling at v₀ ≥ 2 rather than
-/// at 1/16 matters: each step adds ~2 ulp to cn and doubles what came
+/// at 1/8 matters: each step adds ~2 ulp to cn and doubles what came
 /// before, which the condition number (~v) absorbs only from a large start.
 /// For m₁ < 2⁻⁶⁰, v₀ ≥ 12.5 > K/2 and no doubling happens.
 fn sncndn_near_one(v: f64, mc: f64) -> (f64, f64, f64) {

@@ -2,7 +2,8 @@
 
 use super::Modulus;
 use super::complete::{ellip_e_dd, ellip_k_dd};
-use super::duplication::Maclaurin;
+use super::derivatives::{JacobiDm, ellip_k_dm, jacobi_dm_from};
+use super::duplication::MaclaurinHigh;
 use super::epsilon::{epsilon_assemble, epsilon_half_period};
 use super::jacobi::{Jacobi, assemble, jacobi_special, sncndn_half_period};
 use super::landen::{LANDEN_MC, LANDEN_MIN_V, LandenChain};
@@ -42,7 +43,7 @@ pub struct FixedModulus {
     period: Period,
     e: (f64, f64),
     kp: f64,
-    series: Maclaurin,
+    series: MaclaurinHigh,
     landen: Option<LandenChain>,
 }
 
@@ -67,7 +68,7 @@ impl FixedModulus {
             period,
             e: ellip_e_dd(modulus),
             kp: mc.sqrt(),
-            series: Maclaurin::new(m, mc),
+            series: MaclaurinHigh::new(m, mc),
             landen,
         }
     }
@@ -133,6 +134,34 @@ impl FixedModulus {
             self.quarter(v)
         });
         epsilon_assemble(red.j, red.r, e_r, self.e)
+    }
+
+    /// sn, cn, dn, am at u and their derivatives in m at fixed u, as
+    /// [`jacobi_dm`](crate::special::jacobi_dm).
+    #[must_use]
+    pub fn jacobi_dm(&self, u: f64) -> (Jacobi, JacobiDm) {
+        let value = self.jacobi(u);
+        if !u.is_finite() {
+            let nan = f64::NAN;
+            return (
+                value,
+                JacobiDm {
+                    sn: nan,
+                    cn: nan,
+                    dn: nan,
+                    am: nan,
+                },
+            );
+        }
+        let m = self.modulus.m();
+        let (j, r) = if self.modulus.complement() == 0.0 {
+            (0.0, u)
+        } else {
+            let red = self.period.reduce(u);
+            (red.j, red.r)
+        };
+        let d = jacobi_dm_from(&value, j, r, m, || ellip_k_dm(self.modulus));
+        (value, d)
     }
 
     /// [`FixedModulus::jacobi`] at every u of a slice, written to `out`.

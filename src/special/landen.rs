@@ -60,6 +60,9 @@ pub(crate) const LANDEN_MIN_V: f64 = 1.0;
 pub(crate) struct LandenChain {
     /// k′ of each step (first step first).
     pub kp: [f64; MAX_STEPS],
+    /// 1/(1 − k′) and 1/(1 + k′) of each step.
+    inv_minus: [f64; MAX_STEPS],
+    inv_plus: [f64; MAX_STEPS],
     /// The number of steps taken.
     pub n: usize,
     /// m₁ after the last step.
@@ -74,6 +77,8 @@ impl LandenChain {
     pub(crate) fn new(m: f64, mc: f64, v_max: f64) -> Self {
         let mut chain = Self {
             kp: [0.0; MAX_STEPS],
+            inv_minus: [0.0; MAX_STEPS],
+            inv_plus: [0.0; MAX_STEPS],
             n: 0,
             mc,
             scale: 1.0,
@@ -82,8 +87,10 @@ impl LandenChain {
         while chain.n < MAX_STEPS && v_max * chain.scale > hyperbolic_reach(chain.mc) {
             let kp = chain.mc / ((1.0 + k) * (1.0 + k));
             chain.kp[chain.n] = kp;
+            chain.inv_minus[chain.n] = 1.0 / (1.0 - kp);
+            chain.inv_plus[chain.n] = 1.0 / (1.0 + kp);
+            chain.scale *= chain.inv_plus[chain.n];
             chain.n += 1;
-            chain.scale /= 1.0 + kp;
             chain.mc = kp * kp;
             k = ((1.0 - kp) * (1.0 + kp)).sqrt();
         }
@@ -110,8 +117,8 @@ impl LandenChain {
             let inv = 1.0 / d;
             let d2 = d * d;
             s = (1.0 + kp) * s * c * inv;
-            c = (d2 - kp) * inv / (1.0 - kp);
-            d = (d2 + kp) * inv / (1.0 + kp);
+            c = (d2 - kp) * (inv * self.inv_minus[i]);
+            d = (d2 + kp) * (inv * self.inv_plus[i]);
         }
         if c < 0.7 {
             s = ((1.0 - c) * (1.0 + c)).sqrt();

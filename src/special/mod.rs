@@ -14,6 +14,10 @@
 //! | [`jacobi`] | sn, cn, dn and the amplitude am (continuous), plus the quotients | 22.2, 22.16.1 |
 //! | [`jacobi_epsilon`] | ε(u) = ∫0^u dn² = E(am u, k), the paper's E(u, k) in eq5 | 22.16.14 |
 //! | [`jacobi_zeta`] | Z(u) = ε(u) − uE/K | 22.16.32 |
+//! | [`FixedModulus`] | sn, cn, dn, am, ε (and their m-derivatives) at many u, one modulus | – |
+//! | [`ellip_k_dm`], [`ellip_e_dm`] | dK/dm, dE/dm | 19.4.1 |
+//! | [`ellip_f_dm`], [`ellip_e_inc_dm`] | ∂F(φ\|m)/∂m, ∂E(φ\|m)/∂m | 19.4.2 |
+//! | [`jacobi_dm`] | ∂sn/∂m, ∂cn/∂m, ∂dn/∂m, ∂am/∂m at fixed u | 19.4.2, 22.16.1 |
 //!
 //! K′ = K(k′) is `ellip_k(modulus.complementary())`.
 //!
@@ -26,8 +30,12 @@
 //!   positive. Coefficients come from the Gauss series by exact
 //!   differentiation (`tests/data/gen_special_coeffs.py`, mpmath). This is
 //!   Fukushima's (2009) scheme; it beats Carlson's R_F(0, m₁, 1) (measured
-//!   2.2 ulp, ~45 ns) on both accuracy (≤ 0.9 ulp) and speed (~7 ns), and for m ≥ ½ the
+//!   2.2 ulp, ~45 ns) on both accuracy and speed (~7 ns), and for m ≥ ½ the
 //!   offset is formed from m₁, so a modulus given by its complement is exact.
+//!   Near m = 1, −ln m₁ is formed in double-double (m₁ = f·2^e,
+//!   −e ln 2 exact, ln f ≤ 0.7 from libm), which took K from 1.2 to
+//!   ≤ 0.74 ulp; the K that reduces u modulo 2K also carries L·QK exactly
+//!   (Dekker), so 2K is right to ~1e-32.
 //! - **F, E(φ)**: φ = jπ + r (π in three Cody–Waite parts), then Carlson's
 //!   R_F, R_D (DLMF 19.25.5, 19.25.9) with 1 − m sin²r formed as
 //!   cos²r + m₁ sin²r, E(r) written as three non-negative terms, and within
@@ -44,16 +52,42 @@
 //!   which alone took ~15 of ~40 ns in `ellip_f`.
 //! - **sn, cn, dn, am**: u = 2jK + r with 2K as a double-double and exact
 //!   products (|r| ≤ K); |r| > K/2 is folded by the quarter-period shift
-//!   (DLMF 22.4.3) to K − |r| ∈ [0, K/2], with sn = √(1 − m₁ sd²) there. On
-//!   [0, K/2] the argument is halved to ≤ 1/16, expanded in Maclaurin series
-//!   (to u¹¹) and doubled back, carrying 1 − cn and 1 − dn while they are
-//!   below ½ (Fukushima's conditional duplication) and written so that
-//!   every step adds positive terms. For m₁ < 2⁻³⁰ the doubling instead
-//!   starts from the first-order expansion about m = 1 (DLMF 22.10.4–6)
-//!   at v₀ = ½ ln(2⁻²⁴/m₁) ≥ 2: doubling cn from 1/16 up to K/2 ≈ 10–190
-//!   would accumulate ~2 ulp per step. am = atan2(sn, cn) + jπ, so it is
-//!   continuous. Descending Landen (AGM) was not used: its cn = cos φ₀
-//!   loses all digits near K/2 as m → 1.
+//!   (DLMF 22.4.3) to K − |r| ∈ [0, K/2] (K − |r| formed from K's
+//!   double-double), with sn = √(1 − m₁ sd²) there. On [0, K/2]:
+//!   - for m₁ ≤ 0.1 and v ≥ 1, the ascending Landen (Gauss) transformation
+//!     (DLMF 22.7.4–7): k′ → (1 − k)/(1 + k) = m₁/(1 + k)², so m₁ falls as
+//!     ~m₁²/16 per step, until the first-order expansion about m = 1
+//!     (DLMF 22.10.4–6, one `exp` and one `expm1`) is exact to rounding at
+//!     the scaled argument (m₁ e^{2w} ≤ 2⁻²⁴); then back up with
+//!     sn = (1 + k′) s c/d, cn = (d² − k′)/((1 − k′) d),
+//!     dn = (d² + k′)/((1 + k′) d) (one division per step; at most four
+//!     steps), and sn = √((1 − cn)(1 + cn)) once cn < 0.7. No doubling:
+//!     the doubling it replaces accumulated ~1.5 ulp per step, each
+//!     doubled by the later ones, and reached 8 ulp normalised in cn and
+//!     dn near m₁ ~ 1e-8 and v ~ K/2 (issue 9).
+//!   - otherwise the argument is halved to ≤ 1/8, expanded in Maclaurin
+//!     series (to u¹⁵; [`FixedModulus`] to u²² from ≤ 1/4, its 32
+//!     m-polynomials formed once) and doubled back (at most three steps
+//!     for v < 1),
+//!     carrying 1 − cn and 1 − dn while they are below ½ (Fukushima's
+//!     conditional duplication) and written so that every step adds
+//!     positive terms; for m₁ < 2⁻³⁰ (v < 1) the expansion about m = 1
+//!     replaces the series outright.
+//!
+//!   am = atan2(sn, cn) + jπ, so it is continuous. Descending Landen
+//!   (AGM) was not used: its cn = cos φ₀ loses all digits near K/2 as
+//!   m → 1. [`FixedModulus`] holds K, E, the reduction constants, the
+//!   series coefficients and the Landen chain for [0, K/2], so that many u
+//!   at one modulus pay for them once.
+//! - **m-derivatives**: dK/dm = R_D(0, 1, m₁)/6 and dE/dm = −R_D(0, m₁, 1)/6
+//!   (DLMF 19.25.1; the closed forms (E − m₁K)/(2 m m₁), (E − K)/(2m) where
+//!   R_D would need many steps and they cancel little);
+//!   ∂F/∂m = (sin³φ/6) R_D(cos²φ, 1, Δ²), ∂E(φ)/∂m = −(sin³φ/6)
+//!   R_D(cos²φ, Δ², 1) (DLMF 19.4.2 rewritten with 19.25.9–10: no
+//!   cancellation), plus 2j dK/dm or 2j dE/dm per period; at fixed u,
+//!   ∂am/∂m = −dn ∂F/∂m at φ = am u (u = F(am u | m) held fixed), and
+//!   ∂sn/∂m = cn ∂am/∂m, ∂cn/∂m = −sn ∂am/∂m,
+//!   ∂dn/∂m = −sn (sn + 2m cn ∂am/∂m)/(2 dn).
 //! - **ε**: on [0, K/2], ε = m₁u + (m m₁/3) sn³ R_D(cn², 1, dn²) + m sn cd
 //!   (DLMF 19.25.9 at φ = am u, since F(am u) = u); beyond K/2,
 //!   ε(K − s) = E − ε(s) + m sn s cd s (addition formula, DLMF 22.16.27),
@@ -61,48 +95,60 @@
 //!   ε(u + 2jK) = ε(u) + 2jE.
 //!
 //! # Accuracy
-//! Measured against mpmath (50 + |log₁₀ m₁| digits) on 2012 moduli (a grid
+//! Measured against mpmath (50 + |log₁₀ m₁| digits) on 3512 moduli (a grid
 //! of extremes: m = 0, 1e-300, 1e-20, 1e-10, 0.5, 0.9, 0.99 and
-//! m₁ = 1e-5, 1e-10, 1e-15, 2⁻⁵², 1e-300, plus 2000 random moduli log-uniform
-//! in m ∈ [1e-20, 1] or m₁ ∈ [1e-300, 1]), 2120 (φ, m) points with
-//! |φ| ≤ 100 (incl. fl(π/2)) and 2203 (u, m) points with |u| ≤ 1e4 (incl.
-//! fl(K), fl(2K), 101·fl(K)). Errors in ulps of the true value; "norm." is
-//! the error divided by 1 + the relative condition number |x f′(x)/f(x)| in
-//! φ or u, since rounding the input alone moves f by that many half-ulps.
+//! m₁ = 1e-5, 1e-10, 1e-15, 2⁻⁵², 1e-300, 2000 random moduli log-uniform
+//! in m ∈ [1e-20, 1] or m₁ ∈ [1e-300, 1], 1500 with m₁ ∈ [1e-14, 1e-2]),
+//! 4620 (φ, m) points with |φ| ≤ 1e4 (incl. fl(π/2), 1500 with
+//! m₁ ∈ [1e-12, 1e-3], 1000 beyond 10π) and 5254 (u, m) points with
+//! |u| ≤ 1e4 (incl. fl(K), fl(2K), 101·fl(K), and 3051 with
+//! m₁ ∈ [1e-12, 1e-3], K/2 ≤ |u| ≤ 4K). Errors in ulps of the true value;
+//! "norm." is the error divided by 1 + the relative condition number
+//! |x f′(x)/f(x)| in φ or u, since rounding the input alone moves f by that
+//! many half-ulps.
 //!
 //! | function | median | p99 | max | median (norm.) | p99 (norm.) | max (norm.) |
 //! |---|---|---|---|---|---|---|
-//! | K | 0.18 | 0.64 | 0.88 | – | – | – |
-//! | E | 0.02 | 0.35 | 0.48 | – | – | – |
-//! | F(φ) | 0.31 | 1.26 | 1.83 | 0.17 | 0.79 | 1.18 |
-//! | E(φ) | 0.21 | 1.29 | 2.76 | 0.11 | 0.65 | 1.38 |
-//! | sn | 0.22 | 568 | 1.2e17 | 0.05 | 0.80 | 1.18 |
-//! | cn | 0.28 | 2.3e15 | 1.0e17 | 0.09 | 0.64 | 2.38 |
-//! | dn | 0.17 | 1562 | 4746 | 0.10 | 0.60 | 1.73 |
-//! | am | 0.19 | 1.91 | 23 | 0.14 | 0.69 | 1.25 |
-//! | ε | 0.15 | 1.17 | 37 | 0.08 | 0.75 | 1.08 |
+//! | K | 0.18 | 0.59 | 0.74 | – | – | – |
+//! | E | 0.14 | 0.49 | 0.50 | – | – | – |
+//! | F(φ) | 0.28 | 1.16 | 3.85 | 0.18 | 0.79 | 1.07 |
+//! | E(φ) | 0.23 | 1.17 | 2.76 | 0.12 | 0.66 | 1.38 |
+//! | sn | 0.17 | 261 | 1.5e16 | 0.08 | 0.50 | 1.06 |
+//! | cn | 0.68 | 5.2e13 | 2.4e16 | 0.05 | 0.45 | 1.16 |
+//! | dn | 0.39 | 35 | 144 | 0.05 | 0.47 | 0.89 |
+//! | am | 0.20 | 1.03 | 2.15 | 0.14 | 0.58 | 1.08 |
+//! | ε | 0.19 | 1.05 | 1.58 | 0.12 | 0.96 | 1.58 |
+//!
+//! [`FixedModulus`] measures the same or better (am 0.95). The m-derivatives (tables by
+//! `python3 tests/data/gen_special_dm.py`, normalised by their condition
+//! numbers in m and in φ or u): dK/dm ≤ 1.84, dE/dm ≤ 1.71 ulp;
+//! ∂F/∂m ≤ 1.40, ∂E(φ)/∂m ≤ 1.35, ∂sn/∂m ≤ 2.00, ∂cn/∂m ≤ 2.09,
+//! ∂dn/∂m ≤ 1.47, ∂am/∂m ≤ 2.02 ulp norm.
 //!
 //! The huge raw errors are at zeros of sn and cn for large u (u = 2jK
 //! rounded to a double is not a zero) and are what the condition number
 //! predicts; no NaN occurs. Reproduce with
 //! `cargo test --release --test special -- --nocapture accuracy`
-//! (tables: `python3 tests/data/gen_special.py`).
+//! (tables: `python3 tests/data/gen_special.py`). `docs/ACCURACY.md` has
+//! the full tables and what changed.
 //!
 //! # Performance
 //! ns per call on the project's shared 2-core Xeon (x86-64 baseline, no
 //! FMA), interleaved minimum over 1024 inputs, with `ellip` 1.2.3 in the
-//! same run; "extreme" is m₁ = 10^−U(0,15), φ = π/2 − 10^−U(0,8):
+//! same run (load average ~2.5); "extreme" is m₁ = 10^−U(0,15),
+//! φ = π/2 − 10^−U(0,8), u ∈ [0, 100]:
 //!
 //! | function | uniform | ellip | extreme | ellip |
 //! |---|---|---|---|---|
-//! | K | 6.6 | 11.0 | 9.6 | 21.4 |
-//! | E | 6.3 | 11.5 | 9.3 | 30.5 |
-//! | F(φ) | 35.7 | 60.4 | 51.2 | 87.6 |
-//! | E(φ) | 59.9 | 95.4 | 75.9 | 120.9 |
-//! | jacobi | 95.8 | – | 104.0 | – |
+//! | K | 6.8 | 11.6 | 11.9 | 20.7 |
+//! | E | 6.8 | 12.8 | 9.3 | 35.5 |
+//! | F(φ) | 40.7 | 68.9 | 56.7 | 95.7 |
+//! | E(φ) | 57.9 | 105.0 | 74.3 | 131.6 |
+//! | jacobi | 76.9 | – | 100.2 | – |
+//! | [`FixedModulus::jacobi`] (128 u per modulus) | 20.5 | – | 30.5 | – |
 //!
-//! Reproduce with `cargo bench --bench special -- --warm-up-time 0.5
-//! --measurement-time 1`; criterion's means and the history are in
+//! Reproduce with `cargo bench --bench special -- --warm-up-time 1
+//! --measurement-time 2`; criterion's means and the history are in
 //! `docs/PERFORMANCE.md`.
 //!
 //! # Errors
@@ -124,17 +170,21 @@ mod carlson_series;
 #[rustfmt::skip]
 mod coeffs;
 mod complete;
+mod derivatives;
 mod duplication;
 mod epsilon;
 mod fixed;
 mod incomplete;
 mod jacobi;
 mod landen;
+#[rustfmt::skip]
+mod maclaurin_coeffs;
 mod modulus;
 mod period;
 mod poly;
 
 pub use complete::{ellip_e, ellip_k};
+pub use derivatives::{JacobiDm, ellip_e_dm, ellip_e_inc_dm, ellip_f_dm, ellip_k_dm, jacobi_dm};
 pub use epsilon::{jacobi_epsilon, jacobi_zeta};
 pub use fixed::FixedModulus;
 pub use incomplete::{ellip_e_inc, ellip_f};

@@ -10,6 +10,7 @@
 mod common;
 
 mod accuracy;
+mod derivatives;
 mod identities;
 mod special_cases;
 mod table;

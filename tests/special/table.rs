@@ -87,3 +87,23 @@ pub fn line(name: &str, raw: &Stats, norm: Option<&Stats>) -> String {
         ),
     }
 }
+
+/// Prints a table of error statistics in the Markdown form of docs/ACCURACY.md.
+pub fn report(title: &str, head: &str, lines: &[String]) {
+    println!("\n{title}");
+    println!("| {head} | n | median | p99 | max | median (norm.) | p99 (norm.) | max (norm.) |");
+    println!("|---|---|---|---|---|---|---|---|");
+    for l in lines {
+        println!("{l}");
+    }
+}
+
+/// Prints where the largest error of a sample occurred.
+pub fn worst(name: &str, errs: &[f64], ctx: &[String]) {
+    let (i, e) = errs
+        .iter()
+        .enumerate()
+        .max_by(|a, b| a.1.total_cmp(b.1))
+        .expect("non-empty");
+    println!("  worst {name}: {e:.2} ulp at {}", ctx[i]);
+}
