@@ -179,7 +179,7 @@ pub fn fuzz(g: &mut Gen, r: &mut Report, calls: u64) {
             }
         }
 
-        if round % 4 == 0 {
+        if round.is_multiple_of(4) {
             if let Some(res) = r.call(|| what("bifurcation"), || bifurcation(n, j)) {
                 let valid = n >= 1 && j >= 1 && j != n;
                 match res {
@@ -247,7 +247,7 @@ pub fn fuzz(g: &mut Gen, r: &mut Report, calls: u64) {
             });
         }
 
-        if round % 40 == 0 {
+        if round.is_multiple_of(40) {
             trace(g, r);
         }
     }

@@ -75,7 +75,7 @@ pub fn fuzz(g: &mut Gen, r: &mut Report, calls: u64) {
                 || format!("{h}: spring_constant = {res:?}"),
             );
         }
-        if g.u64() % 8 == 0 {
+        if g.u64().is_multiple_of(8) {
             let samples = g.count(20) as usize;
             let samples = if samples > 100 && samples <= MAX_POINTS {
                 100
