@@ -35,7 +35,7 @@
 //! | [`Elastica::nonsymmetric`] | ϑ-shapes with j periods, Ω = 2jK, every root s1 of eq81 | eq81, eq82 |
 //! | [`Elastica::secondary`], [`Elastica::secondary_arm`] | the secondary symmetric branches (υ for j < n, α for j > n), both [`Arm`]s | eq7 with m = j, j + 1 |
 //! | [`bifurcation`] → [`Bifurcation`] | where secondary j meets ϑ_j | K = πn/(2j), K k′ = πn/(2j) |
-//! | [`secondary_fold`] → [`Fold`] | the fold (smallest k) of a secondary branch | — |
+//! | [`secondary_fold`] → [`SecondaryFold`] | the fold (smallest k) of a secondary branch | — |
 //! | [`Trace`] | a whole branch as a [`ForceExtension`](crate::ForceExtension) | figures |
 //! | [`series`] | small-k expansions and linear responses | eq9–eq12 |
 //!
@@ -117,7 +117,7 @@ mod symmetric;
 mod trace;
 
 pub use bifurcation::{Bifurcation, bifurcation};
-pub use secondary::{Fold, secondary_fold};
+pub use secondary::{SecondaryFold, secondary_fold};
 pub use solution::{Arm, Branch, Elastica, Shape};
 pub use symmetric::Symmetric;
 pub use trace::Trace;
@@ -128,7 +128,7 @@ const _: fn() = || {
     send_sync::<Elastica>();
     send_sync::<Symmetric>();
     send_sync::<Bifurcation>();
-    send_sync::<Fold>();
+    send_sync::<SecondaryFold>();
     send_sync::<Trace>();
     send_sync::<Arm>();
     send_sync::<Branch>();

@@ -10,11 +10,11 @@ use crate::special::{Modulus, ellip_k};
 /// meet.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct Fold {
+pub struct SecondaryFold {
     solution: Elastica,
 }
 
-impl Fold {
+impl SecondaryFold {
     /// The modulus k of the fold.
     #[must_use]
     pub fn modulus(&self) -> f64 {
@@ -40,7 +40,7 @@ impl Fold {
     }
 }
 
-impl core::fmt::Display for Fold {
+impl core::fmt::Display for SecondaryFold {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         write!(f, "fold of {}", self.solution)
     }
@@ -181,13 +181,13 @@ impl Elastica {
 /// assert!((f.modulus() - 0.828_428_829_573_529).abs() < 1e-12);
 /// # Ok::<(), hockle::Error>(())
 /// ```
-pub fn secondary_fold(n: u32, j: u32) -> Result<Fold> {
+pub fn secondary_fold(n: u32, j: u32) -> Result<SecondaryFold> {
     let modulus = fold_modulus(n, j)?;
     // `fold_modulus` checked that the branch exists there; rounding in the
     // arm's own solve is the only way to miss it
     let solution =
         solve_arm(n, j, Arm::bifurcating(n, j), modulus).ok_or(Error::FoldNotFound { n, j })?;
-    Ok(Fold { solution })
+    Ok(SecondaryFold { solution })
 }
 
 /// The modulus of the fold (see [`secondary_fold`]): the last modulus of a

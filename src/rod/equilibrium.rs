@@ -154,24 +154,13 @@ impl Equilibrium {
         Ok(Vector3::new(y[0], y[1], y[2]))
     }
 
-    /// Largest `samples` of [`Self::centreline_samples`]: 10⁷ pieces
-    /// (240 MB of points), far beyond any plot, and an allocation a caller
-    /// can make.
-    pub const MAX_SAMPLES: usize = 10_000_000;
-
     /// The centreline at `samples + 1` equally spaced s ∈ [0, 1].
     ///
     /// # Errors
-    /// [`Error::InvalidCount`] unless 1 ≤ `samples` ≤
-    /// [`Self::MAX_SAMPLES`].
+    /// [`Error::InvalidCount`] unless 1 ≤ `samples` <
+    /// [`MAX_POINTS`](crate::error::MAX_POINTS).
     pub fn centreline_samples(&self, samples: usize) -> Result<Vec<Vector3<f64>>> {
-        if !(1..=Self::MAX_SAMPLES).contains(&samples) {
-            return Err(Error::InvalidCount {
-                name: "samples",
-                value: samples as u64,
-                allowed: "1 to 10⁷ pieces (Equilibrium::MAX_SAMPLES)",
-            });
-        }
+        crate::error::check_points("samples", samples.saturating_add(1))?;
         Ok((0..=samples)
             .map(|j| {
                 let y = self.eval(j as f64 / samples as f64);

@@ -34,7 +34,7 @@ impl ElasticaModel {
     ///
     /// # Errors
     /// [`Error::InvalidCount`](crate::Error::InvalidCount) unless
-    /// 2 ≤ `samples` ≤ [`super::MAX_SAMPLES`].
+    /// 2 ≤ `samples` ≤ [`MAX_POINTS`](crate::error::MAX_POINTS).
     pub fn new(samples: usize) -> Result<Self> {
         Ok(Self {
             samples: check_samples(samples)?,

@@ -32,7 +32,7 @@ impl HelixModel {
     ///
     /// # Errors
     /// [`crate::Error::InvalidCount`] unless 2 ≤ `samples` ≤
-    /// [`super::MAX_SAMPLES`].
+    /// [`MAX_POINTS`](crate::error::MAX_POINTS).
     pub fn new(samples: usize) -> Result<Self> {
         Ok(Self {
             samples: check_samples(samples)?,

@@ -68,21 +68,8 @@ pub trait Model {
     }
 }
 
-/// Largest number of samples a model draws its curve with: 10⁷ points
-/// (240 MB of curve), far beyond any plot, and an allocation a caller can
-/// make.
-pub const MAX_SAMPLES: usize = 10_000_000;
-
 pub(crate) fn check_samples(samples: usize) -> Result<usize> {
-    if (2..=MAX_SAMPLES).contains(&samples) {
-        Ok(samples)
-    } else {
-        Err(Error::InvalidCount {
-            name: "samples",
-            value: samples as u64,
-            allowed: "2 to 10⁷ points (spring::MAX_SAMPLES)",
-        })
-    }
+    crate::error::check_points("samples", samples)
 }
 
 /// The target of a model that assumes the spring keeps its intrinsic
