@@ -3,6 +3,9 @@
 //! extension once the O(1) parts of eq8 are integrated by parts.
 
 use core::f64::consts::{FRAC_PI_2, PI};
+use std::sync::OnceLock;
+
+use crate::quadrature::GaussLegendre;
 
 /// Below this m the cancellation-free forms are used; above it the closed
 /// forms lose at most a factor 2/m ≤ 8 to cancellation (measured ≤ 2e-14).
@@ -50,29 +53,19 @@ pub(crate) fn i_period(m: f64) -> f64 {
 }
 
 /// 10-point Gauss–Legendre on [lo, hi] (length ≤ π/4: Bernstein ratio
-/// ≥ 6.8 for m < ¼, error ≲ 6.8^−20 ≈ 1e-17 relative).
+/// ≥ 6.8 for m < ¼, error ≲ 6.8^−20 ≈ 1e-17 relative), with the crate's one
+/// rule ([`GaussLegendre`]).
 fn gl10(m: f64, lo: f64, hi: f64) -> f64 {
-    const X: [f64; 5] = [
-        0.148_874_338_981_631_2,
-        0.433_395_394_129_247_2,
-        0.679_409_568_299_024_4,
-        0.865_063_366_688_984_5,
-        0.973_906_528_517_171_7,
-    ];
-    const W: [f64; 5] = [
-        0.295_524_224_714_752_9,
-        0.269_266_719_309_996_4,
-        0.219_086_362_515_982,
-        0.149_451_349_150_580_6,
-        0.066_671_344_308_688_1,
-    ];
-    let hw = 0.5 * (hi - lo);
-    let c = lo + hw;
-    let mut acc = 0.0;
-    for (x, w) in X.iter().zip(W.iter()) {
-        acc += w * (integrand(m, c - hw * x) + integrand(m, c + hw * x));
-    }
-    acc * hw
+    static RULE: OnceLock<GaussLegendre> = OnceLock::new();
+    let rule = RULE.get_or_init(|| GaussLegendre::new(10));
+    let h = hi - lo;
+    let acc: f64 = rule
+        .nodes
+        .iter()
+        .zip(&rule.weights)
+        .map(|(x, w)| w * integrand(m, lo + h * x))
+        .sum();
+    acc * h
 }
 
 /// ∫_0^r sin²2ψ/Δ³ dψ for |r| ≤ π/2 (odd in r), from the shorter of [0, r]
