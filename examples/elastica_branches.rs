@@ -4,7 +4,7 @@
 //! cargo run --release --example elastica_branches [-- --out DIR]
 //! ```
 //!
-//! Writes into DIR (default `target/hockle/`):
+//! Writes into DIR (default `$CARGO_TARGET_DIR/hockle`, else `target/hockle` under the crate):
 //! - `f_z_sym.svg`: primary υ (solid) and α (dashed) branches, n = 1..8;
 //! - `f_z_nonsym.svg`: ϑ_j, j = 1..7, with the bifurcation points for n = 1..10;
 //! - `f_z_nonsym_n.svg`: ϑ_j (dashed) and the secondary branches for n = 1..10;
@@ -26,7 +26,12 @@ const FMAX: f64 = 1.5;
 
 fn out_dir() -> PathBuf {
     let mut args = std::env::args().skip(1);
-    let mut dir = PathBuf::from("target/hockle");
+    let mut dir = std::env::var_os("CARGO_TARGET_DIR")
+        .map_or_else(
+            || std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"),
+            PathBuf::from,
+        )
+        .join("hockle");
     while let Some(a) = args.next() {
         if a == "--out"
             && let Some(d) = args.next()

@@ -7,7 +7,7 @@
 //! cargo run --release --example shapes [-- --out DIR]
 //! ```
 //!
-//! Writes `shapes.svg` into DIR (default `target/hockle/`).
+//! Writes `shapes.svg` into DIR (default `$CARGO_TARGET_DIR/hockle`, else `target/hockle` under the crate).
 
 use std::error::Error;
 use std::ops::ControlFlow;
@@ -51,7 +51,12 @@ impl Collect {
 }
 
 fn main() -> Result<(), Box<dyn Error>> {
-    let mut out = PathBuf::from("target/hockle");
+    let mut out = std::env::var_os("CARGO_TARGET_DIR")
+        .map_or_else(
+            || std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"),
+            PathBuf::from,
+        )
+        .join("hockle");
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {

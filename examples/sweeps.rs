@@ -7,7 +7,7 @@
 //! ```
 //!
 //! Writes `sweep_theta0.svg`, `sweep_anisotropy.svg` and `sweep_helix.svg`
-//! (default folder `target/hockle/`) and prints, for every spring, its
+//! (default `$CARGO_TARGET_DIR/hockle`, else `target/hockle` under the crate) and prints, for every spring, its
 //! pop-outs and the run time.
 
 use std::error::Error;
@@ -117,7 +117,12 @@ fn plot(title: &str, curves: &[Curve], path: &Path) -> Result<(), Box<dyn Error>
 }
 
 fn main() -> Result<(), Box<dyn Error>> {
-    let mut out = PathBuf::from("target/hockle");
+    let mut out = std::env::var_os("CARGO_TARGET_DIR")
+        .map_or_else(
+            || std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"),
+            PathBuf::from,
+        )
+        .join("hockle");
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
         match arg.as_str() {
