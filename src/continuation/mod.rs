@@ -81,6 +81,7 @@ mod termination;
 pub use observer::{Every, Observer};
 pub use point::{Point, PointKind};
 pub use run::Run;
+pub(crate) use run::drive_into;
 pub use settings::Continuation;
 pub use steps::Steps;
 pub use switch::BranchSide;

@@ -107,13 +107,36 @@ impl Continuation {
     }
 }
 
-/// Drives `steps` to its end, calling the observer's hooks in the order
-/// documented on [`Observer`].
+/// Drives `steps` to its end and keeps every point.
 pub(super) fn drive<P: Problem + ?Sized, O: Observer>(
     mut steps: Steps<'_, P>,
     mut observer: O,
 ) -> Run {
     let mut points = Vec::new();
+    let termination = drive_into(&mut steps, &mut observer, |p| {
+        points.push(p);
+        Ok(())
+    });
+    Run {
+        points,
+        termination,
+        accepted: steps.accepted,
+        rejected: steps.rejected,
+        newton_iterations: steps.newton_iterations,
+    }
+}
+
+/// Drives `steps` to its end, calling the observer's hooks in the order
+/// documented on [`Observer`] and handing every point to `keep` (after its
+/// hooks); returns why the run ended. A driver that keeps less than every
+/// point (the rod's pull keeps its curve, not its solutions) uses this
+/// directly. An error from `keep` ends the run as a failure.
+pub(crate) fn drive_into<P: Problem + ?Sized, O: Observer>(
+    steps: &mut Steps<'_, P>,
+    observer: &mut O,
+    mut keep: impl FnMut(Point) -> crate::error::Result<()>,
+) -> Termination {
+    let mut first = true;
     let mut stopped = false;
     while let Some(p) = steps.next() {
         for ds in steps.rejections.drain(..) {
@@ -123,11 +146,12 @@ pub(super) fn drive<P: Problem + ?Sized, O: Observer>(
         }
         let mut flow = if stopped {
             ControlFlow::Break(())
-        } else if points.is_empty() {
+        } else if first {
             observer.start(steps.cont, &p)
         } else {
             ControlFlow::Continue(())
         };
+        first = false;
         if flow.is_continue() {
             flow = observer.point(&p);
         }
@@ -138,7 +162,12 @@ pub(super) fn drive<P: Problem + ?Sized, O: Observer>(
                 _ => ControlFlow::Continue(()),
             };
         }
-        points.push(p);
+        let ds = steps.ds;
+        if let Err(error) = keep(p) {
+            let termination = Termination::Failed { ds, error };
+            observer.finish(&termination);
+            return termination;
+        }
         if flow.is_break() {
             stopped = true;
             break;
@@ -160,11 +189,5 @@ pub(super) fn drive<P: Problem + ?Sized, O: Observer>(
             .unwrap_or(Termination::MaxSteps(steps.accepted))
     };
     observer.finish(&termination);
-    Run {
-        points,
-        termination,
-        accepted: steps.accepted,
-        rejected: steps.rejected,
-        newton_iterations: steps.newton_iterations,
-    }
+    termination
 }

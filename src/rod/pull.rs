@@ -29,12 +29,13 @@
 //! on), which lets the corrector keep its factorisation. The target is a
 //! stop of the continuation: the last point is located on it.
 
-use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
 
 use super::{Equilibrium, Rod};
 use crate::bvp::{Collocation, Mesh, Solution};
-use crate::continuation::{Continuation, Observer, Point, PointKind, Steps, Termination};
+use crate::continuation::{
+    Continuation, Observer, Point, PointKind, Steps, Termination, drive_into,
+};
 use crate::curve::{Fold, FoldKind, ForceExtension, ForcePoint};
 use crate::error::{Error, Result};
 use crate::load::{Control, Target};
@@ -412,9 +413,11 @@ impl Pull {
     }
 
     /// Runs the pull to its target, calling `observer`'s hooks as
-    /// [`Continuation::run`] does: `start` at the rest state, `point` at
-    /// every point (located folds are points of kind [`PointKind::Fold`]),
-    /// `fold` at each located fold, `finish` with the termination.
+    /// [`Continuation::run`] does (the same driver): `start` at the rest
+    /// state, `point` at every point (located folds are points of kind
+    /// [`PointKind::Fold`]), `fold` at each located fold, `step_rejected`,
+    /// `finish` with the termination. The pull keeps the curve, not the
+    /// solutions.
     ///
     /// A run that cannot go on (Newton failure at the smallest step, the
     /// step limit, the observer) keeps its points and says why in
@@ -423,42 +426,12 @@ impl Pull {
     /// # Errors
     /// As [`Pull::start`]: bad settings, an unreachable target, or a rest
     /// state that cannot be solved; nothing is computed past the error.
-    pub fn run<O: Observer>(&self, observer: O) -> Result<PullRun> {
+    pub fn run<O: Observer>(&self, mut observer: O) -> Result<PullRun> {
         let clock = Instant::now();
         let start = self.start()?;
         let mut trace = start.steps()?;
         let mut recorder = Recorder::new(&start, self.locate_folds);
-        let mut observer = observer;
-        let mut stopped = false;
-        let mut first = true;
-        for p in trace.by_ref() {
-            recorder.record(&p)?;
-            let mut flow = if first {
-                observer.start(start.continuation(), &p)
-            } else {
-                ControlFlow::Continue(())
-            };
-            first = false;
-            if flow.is_continue() {
-                flow = observer.point(&p);
-            }
-            if flow.is_continue() && p.kind() == PointKind::Fold {
-                flow = observer.fold(&p);
-            }
-            if flow.is_break() {
-                stopped = true;
-                break;
-            }
-        }
-        let termination = if stopped {
-            Termination::Stopped
-        } else {
-            trace
-                .termination()
-                .cloned()
-                .unwrap_or(Termination::MaxSteps(trace.accepted()))
-        };
-        observer.finish(&termination);
+        let termination = drive_into(&mut trace, &mut observer, |p| recorder.record(&p));
         Ok(PullRun {
             rod: start.rod,
             target: start.target,
