@@ -84,12 +84,14 @@ struct ScaledPQ {
 pub const DEFAULT_MAX_EXTENSION: f64 = 0.99;
 
 impl Helix {
-    /// The unstressed helix of `n` turns at angle `theta0` (radians, between the
-    /// tangent and the axis; θ0 = π/2 is the flat n-covered ring).
+    /// The unstressed helix of `coils` turns at helix angle `helix_angle`
+    /// (θ0, radians, between the tangent and the axis; θ0 = π/2 is the flat
+    /// n-covered ring): the arguments of [`Spring::new`](crate::spring::Spring::new)
+    /// and [`Rod::new`](crate::rod::Rod::new).
     ///
     /// # Errors
-    /// [`Error::InvalidCount`] if n = 0; [`Error::InvalidArgument`] if θ0 is not
-    /// in (0, π/2].
+    /// [`Error::InvalidCount`] if `coils` = 0; [`Error::InvalidArgument`] if
+    /// the helix angle is not in (0, π/2].
     ///
     /// ```
     /// use hockle::Stiffness;
@@ -98,24 +100,24 @@ impl Helix {
     /// assert_eq!(h.force(88f64.to_radians())?, 0.0);
     /// # Ok::<(), hockle::Error>(())
     /// ```
-    pub fn new(n: u32, theta0: f64, stiffness: Stiffness) -> Result<Self> {
-        if n == 0 {
+    pub fn new(coils: u32, helix_angle: f64, stiffness: Stiffness) -> Result<Self> {
+        if coils == 0 {
             return Err(Error::InvalidCount {
-                name: "n",
+                name: "coils",
                 value: 0,
-                allowed: "at least one turn",
+                allowed: "at least one coil",
             });
         }
-        if !(theta0 > 0.0 && theta0 <= core::f64::consts::FRAC_PI_2) {
+        if !(helix_angle > 0.0 && helix_angle <= core::f64::consts::FRAC_PI_2) {
             return Err(Error::InvalidArgument {
-                name: "theta0",
-                value: theta0,
+                name: "helix_angle",
+                value: helix_angle,
                 allowed: "a helix angle in (0, π/2] radians",
             });
         }
         Ok(Self {
-            coils: n,
-            theta0,
+            coils,
+            theta0: helix_angle,
             stiffness,
         })
     }

@@ -135,12 +135,15 @@ fn bad_input_is_a_typed_error() {
     let s = Stiffness::nikolai(10.0, 0.05).unwrap();
     assert!(matches!(
         Helix::new(0, 1.0, s),
-        Err(Error::InvalidCount { name: "n", .. })
+        Err(Error::InvalidCount { name: "coils", .. })
     ));
     for t in [0.0, -1.0, 1.6, f64::NAN, f64::INFINITY] {
         assert!(matches!(
             Helix::new(4, t, s),
-            Err(Error::InvalidArgument { name: "theta0", .. })
+            Err(Error::InvalidArgument {
+                name: "helix_angle",
+                ..
+            })
         ));
     }
     let h = Helix::new(4, 1.0, s).unwrap();
