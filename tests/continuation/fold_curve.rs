@@ -1,0 +1,287 @@
+//! Two-parameter continuation of folds against closed forms: the Bratu
+//! fold in the domain length, and the folds of a cubic with a known cusp.
+
+use hockle::bvp::classic::BratuLength;
+use hockle::bvp::{Collocation, Problem, Solution};
+use hockle::continuation::{Continuation, FoldContinuation, FoldPointKind, Termination};
+
+use super::BRATU_FOLD;
+
+/// The first fold of a run in p[`fold`] from `start`.
+fn first_fold<P: Problem>(p: &P, fold: usize, start: &Solution, step: f64) -> Solution {
+    let run = Continuation::new(fold)
+        .solver(Collocation::new().intervals(start.mesh().intervals()))
+        .step(step)
+        .max_steps(100)
+        .run(p, start, ())
+        .unwrap();
+    run.folds().next().expect("a fold").solution().clone()
+}
+
+#[test]
+fn bratu_fold_follows_lambda_star_over_l_squared() {
+    let p = BratuLength;
+    let solver = Collocation::new().intervals(20);
+    let start = solver.solve(&p, |_s: f64| [0.0, 0.0], &[0.0, 1.0]).unwrap();
+    let fold = first_fold(&p, 0, &start, 0.1);
+    for (step, stop) in [(0.1, 3.0), (-0.1, 0.5)] {
+        let curve = FoldContinuation::new(
+            0,
+            Continuation::new(1)
+                .solver(solver.clone())
+                .step(step)
+                .stop_at(stop),
+        )
+        .run(&p, &fold, ())
+        .unwrap();
+        assert_eq!(curve.termination(), &Termination::ParameterValue(stop));
+        eprintln!(
+            "bratu fold in L to {stop}: {} points, {} steps, {} Newton iterations",
+            curve.points().len(),
+            curve.accepted(),
+            curve.newton_iterations()
+        );
+        assert!(curve.points().len() > 5);
+        // λ is monotone in L: no turns, no cusps.
+        assert!(curve.points().iter().all(|q| matches!(
+            q.kind(),
+            FoldPointKind::Start | FoldPointKind::Regular | FoldPointKind::ParameterValue
+        )));
+        let mut worst_lambda: f64 = 0.0;
+        let mut worst_slope: f64 = 0.0;
+        for q in curve.points() {
+            let l = q.parameter();
+            // In s = x/L the problem is Bratu with λL²: the same collocation
+            // error at every L (m = 4, N = 20: O(h^8) ~ 1e-11, as in
+            // bratu_fold_is_located) and the fold condition's directional
+            // differences (~1e-10 relative): 1e-9.
+            worst_lambda = worst_lambda.max((q.fold_parameter() * l * l / BRATU_FOLD - 1.0).abs());
+            // dy/dx(0) = (dy/ds(0))/L = 4/L: linear in the position along the
+            // branch, so the same budget plus the reference's 4 exactly; 1e-8.
+            let slope = q.solution().at_mesh(0)[1] / l;
+            worst_slope = worst_slope.max((slope * l / 4.0 - 1.0).abs());
+        }
+        eprintln!("worst relative errors: λ L² {worst_lambda:.2e}, y'(0) L {worst_slope:.2e}");
+        assert!(worst_lambda < 1e-9, "{worst_lambda:e}");
+        assert!(worst_slope < 1e-8, "{worst_slope:e}");
+        let end = curve.last().unwrap();
+        assert_eq!(end.parameter(), stop);
+        // The null vector satisfies the linearised boundary conditions
+        // v(0) = 0 (to Newton's tolerance) and is not zero.
+        assert!(end.null_vector_at_mesh(0)[0].abs() < 1e-9);
+        assert!(end.null_vector_at_mesh(0)[1].abs() > 0.1);
+    }
+}
+
+/// A BVP whose solutions are the constants y ≡ x with x³ − a x + b = 0:
+/// y′ = 0, y(0)³ − a y(0) + b = 0, with a = p₀ + c p₁, b = p₁ − c p₀
+/// (c = `mix`); `analytic` gives the boundary Jacobian (else the solver and
+/// the fold's linearisation take differences). Its folds are 3x² = a, i.e. (a, b) = (3x², 2x³), the curve
+/// 4a³ = 27b², with the cusp at a = b = 0 (x = 0).
+struct Cubic {
+    mix: f64,
+    analytic: bool,
+}
+
+impl Cubic {
+    fn ab(&self, p: &[f64]) -> (f64, f64) {
+        (p[0] + self.mix * p[1], p[1] - self.mix * p[0])
+    }
+}
+
+impl Problem for Cubic {
+    fn dim(&self) -> usize {
+        1
+    }
+    fn parameter_count(&self) -> usize {
+        2
+    }
+    fn boundary_count(&self) -> usize {
+        1
+    }
+    fn rhs(&self, _s: f64, _y: &[f64], _p: &[f64], f: &mut [f64]) {
+        f[0] = 0.0;
+    }
+    fn boundary(&self, y0: &[f64], _y1: &[f64], p: &[f64], g: &mut [f64]) {
+        let (a, b) = self.ab(p);
+        g[0] = y0[0].powi(3) - a * y0[0] + b;
+    }
+    fn boundary_jacobian(
+        &self,
+        y0: &[f64],
+        _y1: &[f64],
+        p: &[f64],
+        mut dg0: hockle::nalgebra::DMatrixViewMut<'_, f64>,
+        _dg1: hockle::nalgebra::DMatrixViewMut<'_, f64>,
+        mut dgp: hockle::nalgebra::DMatrixViewMut<'_, f64>,
+    ) -> bool {
+        if !self.analytic {
+            return false;
+        }
+        let (a, _) = self.ab(p);
+        let x = y0[0];
+        dg0[(0, 0)] = 3.0 * x * x - a;
+        // ∂a/∂p = (1, c), ∂b/∂p = (−c, 1).
+        dgp[(0, 0)] = -x - self.mix;
+        dgp[(0, 1)] = -self.mix * x + 1.0;
+        true
+    }
+}
+
+/// Checks every point against the closed-form fold curve and returns the
+/// kinds of the special points with their x.
+fn check_cubic(
+    problem: &Cubic,
+    curve: &hockle::continuation::FoldCurve,
+) -> Vec<(FoldPointKind, f64)> {
+    let mut special = Vec::new();
+    for q in curve.points() {
+        let x = q.solution().at_mesh(0)[0];
+        let (a, b) = problem.ab(q.parameters());
+        // Constants are exact in collocation. Without the analytic Jacobian
+        // the fold condition's directional difference has error δ² (g‴ = 6,
+        // δ ≈ 6e-6 (1 + max(|x|, |a|, |b|))) ≈ 4e-11 (1 + 3)² < 1e-9 on the
+        // un-rotated run; with it, only Newton's 1e-10 relative to
+        // 1 + ‖x‖∞ ≤ 17 on the rotated one: 1e-8 for both.
+        let tol = 1e-8;
+        assert!((a - 3.0 * x * x).abs() < tol, "a = {a}, x = {x}");
+        assert!((b - 2.0 * x * x * x).abs() < tol, "b = {b}, x = {x}");
+        // The curve 4a³ = 27b² itself, relative to its terms.
+        let scale = 1.0 + 4.0 * a.abs().powi(3);
+        assert!((4.0 * a.powi(3) - 27.0 * b * b).abs() < 10.0 * tol * scale);
+        if !matches!(q.kind(), FoldPointKind::Start | FoldPointKind::Regular) {
+            special.push((q.kind(), x));
+        }
+    }
+    special
+}
+
+#[test]
+fn cusp_of_the_cubic_at_the_origin() {
+    // a = λ, b = μ. At b = 2 the folds in a are at x = 1, a = 3; continue in
+    // b from 2 down to −2 (x from 1 to −1) through the cusp a = b = 0, where
+    // a = 3x² turns and b = 2x³ does not (a non-generic cusp for b).
+    let p = Cubic {
+        mix: 0.0,
+        analytic: false,
+    };
+    let solver = Collocation::new().intervals(4);
+    let start = solver.solve(&p, |_s: f64| [1.7], &[4.0, 2.0]).unwrap();
+    let fold = first_fold(&p, 0, &start, -0.1);
+    assert!((fold.parameters()[0] - 3.0).abs() < 1e-8);
+    let curve = FoldContinuation::new(
+        0,
+        Continuation::new(1).solver(solver).step(-0.1).stop_at(-2.0),
+    )
+    .run(&p, &fold, ())
+    .unwrap();
+    assert_eq!(curve.termination(), &Termination::ParameterValue(-2.0));
+    let special = check_cubic(&p, &curve);
+    assert_eq!(special.len(), 2, "{special:?}");
+    assert_eq!(special[0].0, FoldPointKind::Cusp);
+    let cusp = curve.cusps().next().unwrap();
+    // Located to 1e-10 in arclength: x = O(1e-10), a = 3x² + 4e-11, b = 2x³.
+    let (a, b) = p.ab(cusp.parameters());
+    eprintln!(
+        "cubic cusp: a = {a:.2e}, b = {b:.2e}, x = {:.2e}",
+        special[0].1
+    );
+    assert!(a.abs() < 1e-9 && b.abs() < 1e-9, "a = {a}, b = {b}");
+    assert!(special[0].1.abs() < 1e-8);
+    let (da, db) = cusp.velocity().unwrap();
+    assert!(da.abs() < 1e-8 && db.abs() < 1e-8);
+    // And the curve ends on the other branch of the cusp: x = −1, a = 3.
+    let end = curve.last().unwrap();
+    assert!((end.solution().at_mesh(0)[0] + 1.0).abs() < 1e-8);
+    assert!((end.fold_parameter() - 3.0).abs() < 1e-8);
+}
+
+#[test]
+fn turns_and_a_generic_cusp_of_the_rotated_cubic() {
+    // a = λ + μ, b = μ − λ: along the fold curve λ = (3x² − 2x³)/2,
+    // μ = (3x² + 2x³)/2. From x = 2 (λ = −2, μ = 14) towards x < 0: λ turns
+    // at x = 1 (μ = 2.5), both turn at the cusp x = 0, μ turns at x = −1
+    // (λ = 2.5); the run stops at μ = −1.
+    let p = Cubic {
+        mix: 1.0,
+        analytic: true,
+    };
+    let solver = Collocation::new().intervals(4);
+    let start = solver.solve(&p, |_s: f64| [2.5], &[-1.0, 14.0]).unwrap();
+    let fold = first_fold(&p, 0, &start, -0.1);
+    assert!((fold.parameters()[0] + 2.0).abs() < 1e-8);
+    let mut cusps_seen = 0;
+    let curve = FoldContinuation::new(
+        0,
+        Continuation::new(1).solver(solver).step(-0.1).stop_at(-1.0),
+    )
+    .run(&p, &fold, |q: &hockle::continuation::FoldPoint| {
+        if q.kind() == FoldPointKind::Cusp {
+            cusps_seen += 1;
+        }
+        std::ops::ControlFlow::Continue(())
+    })
+    .unwrap();
+    assert_eq!(curve.termination(), &Termination::ParameterValue(-1.0));
+    let special = check_cubic(&p, &curve);
+    let kinds: Vec<_> = special.iter().map(|s| s.0).collect();
+    assert_eq!(
+        kinds,
+        [
+            FoldPointKind::Turn(0),
+            FoldPointKind::Cusp,
+            FoldPointKind::Turn(1),
+            FoldPointKind::ParameterValue
+        ],
+        "{special:?}"
+    );
+    assert_eq!(cusps_seen, 1);
+    // Turns are located to 1e-10 in arclength where the rate is linear in
+    // x: x to ~1e-10 (plus the fold condition's 4e-11 relative); 1e-8.
+    for ((_, x), exact) in special.iter().zip([1.0, 0.0, -1.0]) {
+        assert!((x - exact).abs() < 1e-8, "x = {x}, expected {exact}");
+    }
+}
+
+#[test]
+fn bad_fold_parameters_are_refused_before_work() {
+    let p = BratuLength;
+    let start = Collocation::new()
+        .intervals(10)
+        .solve(&p, |_s: f64| [0.0, 0.0], &[0.0, 1.0])
+        .unwrap();
+    for fold in [1, 2] {
+        let e = FoldContinuation::new(fold, Continuation::new(1))
+            .run(&p, &start, ())
+            .unwrap_err();
+        assert!(matches!(e, hockle::Error::InvalidCount { .. }), "{e}");
+    }
+    let free = Continuation::new(1).solver(Collocation::new().free_parameters(&[0]));
+    let e = FoldContinuation::new(0, free)
+        .run(&p, &start, ())
+        .unwrap_err();
+    assert!(matches!(e, hockle::Error::InvalidCount { .. }), "{e}");
+    let e = FoldContinuation::new(0, Continuation::new(1).step(f64::NAN))
+        .run(&p, &start, ())
+        .unwrap_err();
+    assert!(matches!(e, hockle::Error::InvalidArgument { .. }), "{e}");
+    // Far from a fold (λ = 0, y = 0) the start is refused with a typed
+    // error, or the extended Newton (λ free) finds the fold itself.
+    match FoldContinuation::new(0, Continuation::new(1).max_steps(1)).run(&p, &start, ()) {
+        Err(e) => assert!(
+            matches!(
+                e,
+                hockle::Error::NewtonNotConverged { .. }
+                    | hockle::Error::NewtonDiverged { .. }
+                    | hockle::Error::SingularJacobian { .. }
+            ),
+            "{e}"
+        ),
+        Ok(c) => {
+            let q = &c.points()[0];
+            let l = q.parameter();
+            // As in bratu_fold_follows_lambda_star_over_l_squared (N = 10).
+            assert!((q.fold_parameter() * l * l / BRATU_FOLD - 1.0).abs() < 1e-7);
+        }
+    }
+}
