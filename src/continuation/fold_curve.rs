@@ -29,8 +29,9 @@
 //!   row and column, the fold condition a scalar g = 0 from a bordered solve)
 //!   would factorise n-dimensional blocks only, but needs g's derivatives
 //!   (an adjoint solve and F_xx products per Newton step) and a corrector of
-//!   its own; for the rod's n = 13 at a few hundred intervals the extended
-//!   system costs milliseconds per step (docs/PERFORMANCE.md), so the
+//!   its own. The Bratu fold curve costs 0.53 ms per step at N = 20 (about
+//!   5× a one-parameter step per interval; docs/PERFORMANCE.md); the
+//!   rod-sized cost is not measured yet. For a first version the
 //!   simpler, fully reused formulation was chosen.
 //!
 //! ## Turns and cusps
@@ -228,6 +229,7 @@ pub struct FoldCurve {
     points: Vec<FoldPoint>,
     termination: Termination,
     accepted: usize,
+    rejected: usize,
     newton_iterations: u64,
 }
 
@@ -259,6 +261,12 @@ impl FoldCurve {
     #[must_use]
     pub fn accepted(&self) -> usize {
         self.accepted
+    }
+
+    /// Rejected (halved and retried) steps.
+    #[must_use]
+    pub fn rejected(&self) -> usize {
+        self.rejected
     }
 
     /// Corrector iterations of every step and location.
@@ -321,6 +329,13 @@ impl FoldContinuation {
                 name: "fold parameter",
                 value: self.fold as u64,
                 allowed: "a parameter index below parameter_count(), not the continuation parameter, not a free parameter of the solver",
+            });
+        }
+        if free.contains(&cont.parameter) {
+            return Err(Error::InvalidCount {
+                name: "continuation parameter",
+                value: cont.parameter as u64,
+                allowed: "a parameter that is not already one of the solver's free parameters",
             });
         }
         let tab = cont.solver.validate()?;
@@ -451,6 +466,7 @@ impl FoldContinuation {
             points,
             termination,
             accepted: steps.accepted(),
+            rejected: steps.rejected(),
             newton_iterations: steps.newton_iterations(),
         })
     }

@@ -285,3 +285,49 @@ fn bad_fold_parameters_are_refused_before_work() {
         }
     }
 }
+
+/// Stops at the first cusp and records the termination it is given.
+struct StopAtCusp<'a> {
+    points: &'a mut usize,
+    finished: &'a mut Option<Termination>,
+}
+
+impl hockle::continuation::FoldObserver for StopAtCusp<'_> {
+    fn point(&mut self, _point: &hockle::continuation::FoldPoint) -> std::ops::ControlFlow<()> {
+        *self.points += 1;
+        std::ops::ControlFlow::Continue(())
+    }
+    fn cusp(&mut self, _cusp: &hockle::continuation::FoldPoint) -> std::ops::ControlFlow<()> {
+        std::ops::ControlFlow::Break(())
+    }
+    fn finish(&mut self, termination: &Termination) {
+        *self.finished = Some(termination.clone());
+    }
+}
+
+#[test]
+fn an_observer_stops_at_the_cusp_and_keeps_the_points() {
+    let p = Cubic {
+        mix: 0.0,
+        analytic: true,
+    };
+    let solver = Collocation::new().intervals(4);
+    let start = solver.solve(&p, |_s: f64| [1.7], &[4.0, 2.0]).unwrap();
+    let fold = first_fold(&p, 0, &start, -0.1);
+    let (mut points, mut finished) = (0, None);
+    let obs = StopAtCusp {
+        points: &mut points,
+        finished: &mut finished,
+    };
+    let curve = FoldContinuation::new(
+        0,
+        Continuation::new(1).solver(solver).step(-0.1).stop_at(-2.0),
+    )
+    .run(&p, &fold, obs)
+    .unwrap();
+    assert_eq!(curve.termination(), &Termination::Stopped);
+    assert_eq!(finished, Some(Termination::Stopped));
+    assert_eq!(curve.last().unwrap().kind(), FoldPointKind::Cusp);
+    assert_eq!(points, curve.points().len());
+    assert!(curve.points().len() > 3);
+}
