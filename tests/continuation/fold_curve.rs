@@ -7,10 +7,16 @@ use hockle::continuation::{Continuation, FoldContinuation, FoldPointKind, Termin
 
 use super::BRATU_FOLD;
 
-/// The first fold of a run in p[`fold`] from `start`.
-fn first_fold<P: Problem>(p: &P, fold: usize, start: &Solution, step: f64) -> Solution {
+/// The first fold of a run in p[`fold`] from `start` (solved by `solver`).
+fn first_fold<P: Problem>(
+    p: &P,
+    fold: usize,
+    solver: &Collocation,
+    start: &Solution,
+    step: f64,
+) -> Solution {
     let run = Continuation::new(fold)
-        .solver(Collocation::new().intervals(start.mesh().intervals()))
+        .solver(solver.clone())
         .step(step)
         .max_steps(100)
         .run(p, start, ())
@@ -23,7 +29,7 @@ fn bratu_fold_follows_lambda_star_over_l_squared() {
     let p = BratuLength;
     let solver = Collocation::new().intervals(20);
     let start = solver.solve(&p, |_s: f64| [0.0, 0.0], &[0.0, 1.0]).unwrap();
-    let fold = first_fold(&p, 0, &start, 0.1);
+    let fold = first_fold(&p, 0, &solver, &start, 0.1);
     for (step, stop) in [(0.1, 3.0), (-0.1, 0.5)] {
         let curve = FoldContinuation::new(
             0,
@@ -128,6 +134,15 @@ impl Problem for Cubic {
     }
 }
 
+/// The fold in λ of `p` reached by a run with decreasing λ from the
+/// solution near `guess` at `parameters`, with the solver (N = 4).
+fn cubic_fold(p: &Cubic, guess: f64, parameters: &[f64]) -> (Collocation, Solution) {
+    let solver = Collocation::new().intervals(4);
+    let start = solver.solve(p, |_s: f64| [guess], parameters).unwrap();
+    let fold = first_fold(p, 0, &solver, &start, -0.1);
+    (solver, fold)
+}
+
 /// Checks every point against the closed-form fold curve and returns the
 /// kinds of the special points with their x.
 fn check_cubic(
@@ -165,9 +180,7 @@ fn cusp_of_the_cubic_at_the_origin() {
         mix: 0.0,
         analytic: false,
     };
-    let solver = Collocation::new().intervals(4);
-    let start = solver.solve(&p, |_s: f64| [1.7], &[4.0, 2.0]).unwrap();
-    let fold = first_fold(&p, 0, &start, -0.1);
+    let (solver, fold) = cubic_fold(&p, 1.7, &[4.0, 2.0]);
     assert!((fold.parameters()[0] - 3.0).abs() < 1e-8);
     let curve = FoldContinuation::new(
         0,
@@ -206,9 +219,7 @@ fn turns_and_a_generic_cusp_of_the_rotated_cubic() {
         mix: 1.0,
         analytic: true,
     };
-    let solver = Collocation::new().intervals(4);
-    let start = solver.solve(&p, |_s: f64| [2.5], &[-1.0, 14.0]).unwrap();
-    let fold = first_fold(&p, 0, &start, -0.1);
+    let (solver, fold) = cubic_fold(&p, 2.5, &[-1.0, 14.0]);
     assert!((fold.parameters()[0] + 2.0).abs() < 1e-8);
     let mut cusps_seen = 0;
     let curve = FoldContinuation::new(
@@ -311,9 +322,7 @@ fn an_observer_stops_at_the_cusp_and_keeps_the_points() {
         mix: 0.0,
         analytic: true,
     };
-    let solver = Collocation::new().intervals(4);
-    let start = solver.solve(&p, |_s: f64| [1.7], &[4.0, 2.0]).unwrap();
-    let fold = first_fold(&p, 0, &start, -0.1);
+    let (solver, fold) = cubic_fold(&p, 1.7, &[4.0, 2.0]);
     let (mut points, mut finished) = (0, None);
     let obs = StopAtCusp {
         points: &mut points,
@@ -330,4 +339,62 @@ fn an_observer_stops_at_the_cusp_and_keeps_the_points() {
     assert_eq!(curve.last().unwrap().kind(), FoldPointKind::Cusp);
     assert_eq!(points, curve.points().len());
     assert!(curve.points().len() > 3);
+}
+
+/// [`BratuLength`] with a free parameter c (p₂) fixed by the integral
+/// condition ∫₀¹ (y − c) ds = 0: the fold in λ is unchanged, but its null
+/// vector has a δc and the extended problem linearises an integral
+/// condition (by differences: no integrand Jacobian).
+struct BratuMean;
+
+impl Problem for BratuMean {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn parameter_count(&self) -> usize {
+        3
+    }
+    fn boundary_count(&self) -> usize {
+        2
+    }
+    fn integral_count(&self) -> usize {
+        1
+    }
+    fn rhs(&self, s: f64, y: &[f64], p: &[f64], f: &mut [f64]) {
+        BratuLength.rhs(s, y, &p[..2], f);
+    }
+    fn boundary(&self, y0: &[f64], y1: &[f64], p: &[f64], g: &mut [f64]) {
+        BratuLength.boundary(y0, y1, &p[..2], g);
+    }
+    fn integrand(&self, _s: f64, y: &[f64], _r: &[f64], p: &[f64], h: &mut [f64]) {
+        h[0] = y[0] - p[2];
+    }
+}
+
+#[test]
+fn a_free_parameter_and_an_integral_condition_ride_along() {
+    let p = BratuMean;
+    let solver = Collocation::new().intervals(20).free_parameters(&[2]);
+    let start = solver
+        .solve(&p, |_s: f64| [0.0, 0.0], &[0.0, 1.0, 0.0])
+        .unwrap();
+    let fold = first_fold(&p, 0, &solver, &start, 0.1);
+    let curve = FoldContinuation::new(
+        0,
+        Continuation::new(1).solver(solver).step(0.1).stop_at(2.0),
+    )
+    .run(&p, &fold, ())
+    .unwrap();
+    assert_eq!(curve.termination(), &Termination::ParameterValue(2.0));
+    for q in curve.points() {
+        let l = q.parameter();
+        // As in bratu_fold_follows_lambda_star_over_l_squared, with the
+        // integral's directional difference (~1e-10 relative) added: 1e-9.
+        let e = (q.fold_parameter() * l * l / BRATU_FOLD - 1.0).abs();
+        assert!(e < 1e-9, "L = {l}: {e:e}");
+        // c is the mean of y, which at the fold depends on λL² alone: the
+        // same value along the whole curve (to the same budget).
+        let c0 = curve.points()[0].parameters()[2];
+        assert!((q.parameters()[2] - c0).abs() < 1e-9 * c0.abs().max(1.0));
+    }
 }
