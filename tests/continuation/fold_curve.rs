@@ -398,3 +398,70 @@ fn a_free_parameter_and_an_integral_condition_ride_along() {
         assert!((q.parameters()[2] - c0).abs() < 1e-9 * c0.abs().max(1.0));
     }
 }
+
+/// The cost at rod size (not a check: prints the time per step). The
+/// paper's spring (n = 4, θ0 = 89.8°, A/B = 10, ν = 0.05) is pulled to its
+/// first force fold, which is then continued in θ0 down to 85° (at most 100 steps):
+/// `cargo test --release --test continuation rod_fold_curve_cost -- --ignored --nocapture`.
+#[test]
+#[ignore = "a timing, run by hand"]
+fn rod_fold_curve_cost() {
+    use hockle::Stiffness;
+    use hockle::rod::{Pull, Rod};
+    let rod = Rod::new(
+        4,
+        89.8_f64.to_radians(),
+        Stiffness::nikolai(10.0, 0.05).unwrap(),
+    )
+    .unwrap();
+    let pull = Pull::new(rod, hockle::Target::Force(3.0));
+    let solver = pull.check().unwrap();
+    let start = pull.start().unwrap();
+    let clock = std::time::Instant::now();
+    let fold = start
+        .steps()
+        .unwrap()
+        .find(|p| p.kind() == hockle::continuation::PointKind::Fold)
+        .expect("a fold")
+        .solution()
+        .clone();
+    let to_fold = clock.elapsed();
+    let scale = rod.scale().value();
+    // The pull's weights (src/rod/pull.rs): F scaled by the force scale,
+    // M by 1e-3 (parameter weight 1: with 1/scale² as the pull has, the
+    // steps took 6× longer for 1.6× the progress in θ0).
+    let mut weights = [1.0; 13];
+    weights[7..10].fill(1.0 / (scale * scale));
+    weights[10..13].fill(1e-3);
+    let clock = std::time::Instant::now();
+    let curve = FoldContinuation::new(
+        Rod::FORCE,
+        Continuation::new(Rod::THETA0)
+            .solver(solver)
+            .weights(&weights)
+            .step(-0.01)
+            .step_bounds(1e-8, 0.5)
+            .locate_tolerance(1e-9)
+            .stop_at(85.0_f64.to_radians())
+            .max_steps(100),
+    )
+    .run(&rod, &fold, ())
+    .unwrap();
+    let t = clock.elapsed();
+    let (first, last) = (&curve.points()[0], curve.last().unwrap());
+    eprintln!(
+        "rod: N = {}, pull to the first fold {:.3} s; fold curve {} steps ({} rejected, {} corrector iterations) in {:.3} s = {:.1} ms per step; θ0 {:.4}° → {:.4}°, F/scale {:.5} → {:.5}; {}",
+        fold.mesh().intervals(),
+        to_fold.as_secs_f64(),
+        curve.accepted(),
+        curve.rejected(),
+        curve.newton_iterations(),
+        t.as_secs_f64(),
+        1e3 * t.as_secs_f64() / curve.accepted().max(1) as f64,
+        first.parameter().to_degrees(),
+        last.parameter().to_degrees(),
+        first.fold_parameter() / scale,
+        last.fold_parameter() / scale,
+        curve.termination()
+    );
+}
