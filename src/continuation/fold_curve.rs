@@ -31,7 +31,7 @@
 //!   (an adjoint solve and F_xx products per Newton step) and a corrector of
 //!   its own. The Bratu fold curve costs 0.53 ms per step at N = 20 (about
 //!   5× a one-parameter step per interval), a fold of the rod (n = 13,
-//!   N = 48) 9–11 ms per step, about 6× a step of the pull
+//!   N = 48) 9–12 ms per step, about 6× a step of the pull
 //!   (docs/PERFORMANCE.md): affordable for curves of a few hundred steps,
 //!   so the simpler, fully reused formulation was chosen.
 //!

@@ -406,25 +406,10 @@ fn a_free_parameter_and_an_integral_condition_ride_along() {
 #[test]
 #[ignore = "a timing, run by hand"]
 fn rod_fold_curve_cost() {
-    use hockle::Stiffness;
-    use hockle::rod::{Pull, Rod};
-    let rod = Rod::new(
-        4,
-        89.8_f64.to_radians(),
-        Stiffness::nikolai(10.0, 0.05).unwrap(),
-    )
-    .unwrap();
-    let pull = Pull::new(rod, hockle::Target::Force(3.0));
-    let solver = pull.check().unwrap();
-    let start = pull.start().unwrap();
+    use hockle::rod::Rod;
+    let rod = spring(89.8_f64.to_radians());
     let clock = std::time::Instant::now();
-    let fold = start
-        .steps()
-        .unwrap()
-        .find(|p| p.kind() == hockle::continuation::PointKind::Fold)
-        .expect("a fold")
-        .solution()
-        .clone();
+    let (solver, fold) = first_rod_fold(rod);
     let to_fold = clock.elapsed();
     let scale = rod.scale().value();
     // The pull's weights (src/rod/pull.rs): F scaled by the force scale,
@@ -464,4 +449,66 @@ fn rod_fold_curve_cost() {
         last.fold_parameter() / scale,
         curve.termination()
     );
+}
+
+/// The paper's spring (n = 4, A/B = 10, ν = 0.05) at `theta0_deg`.
+fn spring(theta0: f64) -> hockle::rod::Rod {
+    hockle::rod::Rod::new(4, theta0, hockle::Stiffness::nikolai(10.0, 0.05).unwrap()).unwrap()
+}
+
+/// The first located force fold of a pull of `rod` to F/((2πn)²B) = 3.
+fn first_rod_fold(rod: hockle::rod::Rod) -> (Collocation, Solution) {
+    let pull = hockle::rod::Pull::new(rod, hockle::Target::Force(3.0));
+    let solver = pull.check().unwrap();
+    let fold = pull
+        .start()
+        .unwrap()
+        .steps()
+        .unwrap()
+        .find(|p| p.kind() == hockle::continuation::PointKind::Fold)
+        .expect("a fold")
+        .solution()
+        .clone();
+    (solver, fold)
+}
+
+#[test]
+fn rod_fold_curve_agrees_with_one_parameter_pulls() {
+    // A second model: the fold force of a pull at the fold curve's last θ0
+    // (sign change of dF/ds located by arclength on the one-parameter
+    // branch) against the fold curve's (the extended system).
+    use hockle::rod::Rod;
+    let (solver, fold) = first_rod_fold(spring(89.8_f64.to_radians()));
+    let curve = FoldContinuation::new(
+        Rod::FORCE,
+        Continuation::new(Rod::THETA0)
+            .solver(solver)
+            .step(-0.05)
+            .locate_tolerance(1e-9)
+            .max_steps(8),
+    )
+    .run(&spring(89.8_f64.to_radians()), &fold, ())
+    .unwrap();
+    let last = curve.last().unwrap();
+    let theta0 = last.parameter();
+    assert!(
+        theta0 < 89.79_f64.to_radians(),
+        "θ0 = {}°",
+        theta0.to_degrees()
+    );
+    let (_, check) = first_rod_fold(spring(theta0));
+    assert_eq!(check.mesh(), last.solution().mesh());
+    let f = check.parameters()[Rod::FORCE];
+    let e = (last.fold_parameter() / f - 1.0).abs();
+    eprintln!(
+        "rod fold at θ0 = {:.5}°: fold curve F = {:.12e}, pull F = {f:.12e}, relative difference {e:.2e}",
+        theta0.to_degrees(),
+        last.fold_parameter()
+    );
+    // Same mesh, same collocation: both are the zero of the same discrete
+    // fold condition, located to 1e-9 in arclength (quadratic in F at a
+    // fold: ~1e-18) and corrected to Newton's 1e-10 relative to 1 + ‖x‖∞
+    // (F ≈ 400, so ~4e-8 absolute, 1e-10 relative), the extended
+    // linearisation's differences ~1e-10: 1e-8 relative.
+    assert!(e < 1e-8, "{e:e}");
 }
