@@ -22,17 +22,17 @@
 //! - Cost: twice the dimension. The condensation's stage blocks are
 //!   (2mn)², so one factorisation costs about 8 times the original
 //!   problem's; the Jacobian of the v equations needs second derivatives of
-//!   f, which the solver takes by central differences of the extended
-//!   right-hand side (which itself uses the problem's analytic ∂f/∂y when it
-//!   has one, else a directional central difference). A minimally
+//!   f, taken by central differences of the problem's analytic ∂f/∂y, ∂f/∂p
+//!   (or, without them, by the solver's differences of the extended
+//!   right-hand side, itself a directional difference). A minimally
 //!   augmented system (the original n-dimensional system bordered by one
 //!   row and column, the fold condition a scalar g = 0 from a bordered solve)
 //!   would factorise n-dimensional blocks only, but needs g's derivatives
 //!   (an adjoint solve and F_xx products per Newton step) and a corrector of
-//!   its own. The Bratu fold curve costs 0.53 ms per step at N = 20 (about
-//!   5× a one-parameter step per interval), a fold of the rod (n = 13,
-//!   N = 48) 9–12 ms per step, about 6× a step of the pull
-//!   (docs/PERFORMANCE.md): affordable for curves of a few hundred steps,
+//!   its own. Measured (docs/PERFORMANCE.md): the Bratu fold curve costs
+//!   about 4× a one-parameter step per interval, a fold of the rod (n = 13,
+//!   N = 48) 6–7 ms per step, about 4× a step of the pull: affordable for
+//!   curves of a few hundred steps,
 //!   so the simpler, fully reused formulation was chosen.
 //!
 //! ## Turns and cusps

@@ -16,7 +16,7 @@
 //! with q, λ and δq free it is well posed when the original one is with q
 //! free, and continuation in a second parameter μ traces the fold curve.
 
-use nalgebra::{DMatrix, DVector};
+use nalgebra::{DMatrix, DMatrixViewMut, DVector};
 
 use crate::bvp::Problem;
 
@@ -109,6 +109,63 @@ impl<P: Problem + ?Sized> Problem for Extended<'_, P> {
             |x, out| self.problem.rhs(s, &x[..n], &x[n..], out),
             fv,
         );
+    }
+    /// With the problem's analytic ∂f/∂y, ∂f/∂p: those for the y rows and
+    /// the v block, and central differences of f_y v + f_p δp (one problem
+    /// Jacobian per side, steps as the solver's) for the second
+    /// derivatives; without them, `false` (the solver differences
+    /// [`rhs`](Problem::rhs)).
+    fn rhs_jacobian(
+        &self,
+        s: f64,
+        y: &[f64],
+        p: &[f64],
+        mut dfdy: DMatrixViewMut<'_, f64>,
+        mut dfdp: DMatrixViewMut<'_, f64>,
+    ) -> bool {
+        let (n, np) = (self.n(), self.np());
+        let (y0, v) = y.split_at(n);
+        let pp = &p[..np];
+        let mut fy = DMatrix::zeros(n, n);
+        let mut fp = DMatrix::zeros(n, np);
+        if !self
+            .problem
+            .rhs_jacobian(s, y0, pp, fy.as_view_mut(), fp.as_view_mut())
+        {
+            return false;
+        }
+        let dp = DVector::from_vec(self.parameter_direction(p));
+        let v = DVector::from_column_slice(v);
+        let linearised = |yy: &[f64], ppp: &[f64]| {
+            let mut gy = DMatrix::zeros(n, n);
+            let mut gp = DMatrix::zeros(n, np);
+            self.problem
+                .rhs_jacobian(s, yy, ppp, gy.as_view_mut(), gp.as_view_mut());
+            gy * &v + gp * &dp
+        };
+        dfdy.view_mut((0, 0), (n, n)).copy_from(&fy);
+        dfdy.view_mut((n, n), (n, n)).copy_from(&fy);
+        dfdp.view_mut((0, 0), (n, np)).copy_from(&fp);
+        for (k, &q) in self.free.iter().enumerate() {
+            dfdp.view_mut((n, np + k), (n, 1)).copy_from(&fp.column(q));
+        }
+        let mut x: Vec<f64> = y0.iter().chain(pp).copied().collect();
+        for c in 0..n + np {
+            let x0 = x[c];
+            let h = STEP * x0.abs().max(1.0);
+            x[c] = x0 + h;
+            let plus = linearised(&x[..n], &x[n..]);
+            x[c] = x0 - h;
+            let minus = linearised(&x[..n], &x[n..]);
+            x[c] = x0;
+            let col = (plus - minus) / (2.0 * h);
+            if c < n {
+                dfdy.view_mut((n, c), (n, 1)).copy_from(&col);
+            } else {
+                dfdp.view_mut((n, c - n), (n, 1)).copy_from(&col);
+            }
+        }
+        true
     }
     fn boundary(&self, y0: &[f64], y1: &[f64], p: &[f64], g: &mut [f64]) {
         let (n, np) = (self.n(), self.np());
