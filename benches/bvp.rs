@@ -8,9 +8,9 @@ use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use hockle::bvp::Collocation;
-use hockle::continuation::Continuation;
+use hockle::continuation::{Continuation, FoldContinuation};
 
-use hockle::bvp::classic::{self as problems, Bratu, Coupled13, Troesch};
+use hockle::bvp::classic::{self as problems, Bratu, BratuLength, Coupled13, Troesch};
 
 /// One damped Newton step of the 13-dimensional system (Jacobian at every
 /// collocation point, condensation, elimination, two solves, two residual
@@ -41,6 +41,39 @@ fn bratu_continuation(c: &mut Criterion) {
         b.iter(|| {
             let br = cont.run(&p, black_box(&start), ()).unwrap();
             black_box(br.points().len())
+        })
+    });
+}
+
+/// The Bratu fold continued in the domain length L from 1 to 3 (N = 20,
+/// m = 4; the curve of tests/continuation/fold_curve.rs), from the fold
+/// located by a one-parameter run.
+fn bratu_fold_curve(c: &mut Criterion) {
+    let p = BratuLength;
+    let solver = Collocation::new().intervals(20);
+    let start = solver.solve(&p, |_s: f64| [0.0, 0.0], &[0.0, 1.0]).unwrap();
+    let run = Continuation::new(0)
+        .solver(solver.clone())
+        .step(0.1)
+        .max_steps(100)
+        .run(&p, &start, ())
+        .unwrap();
+    let fold = run.folds().next().unwrap().solution().clone();
+    let curve = FoldContinuation::new(
+        0,
+        Continuation::new(1).solver(solver).step(0.1).stop_at(3.0),
+    );
+    let r = curve.run(&p, &fold, ()).unwrap();
+    eprintln!(
+        "bratu fold curve L 1 → 3: {} points, {} steps, {} corrector iterations",
+        r.points().len(),
+        r.accepted(),
+        r.newton_iterations()
+    );
+    c.bench_function("bratu_fold_curve_l_1_to_3_n20_m4", |b| {
+        b.iter(|| {
+            let r = curve.run(&p, black_box(&fold), ()).unwrap();
+            black_box(r.points().len())
         })
     });
 }
@@ -240,6 +273,7 @@ criterion_group!(
     benches,
     newton_step_13,
     bratu_continuation,
+    bratu_fold_curve,
     versus_scipy,
     continuation_13,
     parallel_condensation

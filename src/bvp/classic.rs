@@ -6,6 +6,7 @@
 //! |---|---|
 //! | [`Linear`] | y = sinh(1 − s)/sinh(1) |
 //! | [`Bratu`] | fold at λ* = 3.513830719125162 with y′(0) = 4; exact family [`bratu_lambda`] |
+//! | [`BratuLength`] | on [0, L]: fold at λ*(L) = λ*(1)/L² with dy/dx(0) = 4/L |
 //! | [`Troesch`] | y′(0) = 4.575046140632e-2 at μ = 5 (boundary layer at μ = 10) |
 //! | [`Quadratic`] | branch points of the trivial branch at p = 1, 2, 3, … |
 //! | [`Euler`] | branch points at P = k²π²; first buckled branch P = 4K(k)² |
@@ -106,6 +107,49 @@ impl Problem for Bratu {
 #[must_use]
 pub fn bratu_lambda(theta: f64) -> f64 {
     theta * theta / (2.0 * (theta / 4.0).cosh().powi(2))
+}
+
+/// Bratu on a domain of length L: y_xx + λ e^y = 0 on x ∈ [0, L],
+/// y(0) = y(L) = 0; `p = [λ, L]`. In s = x/L ∈ [0, 1] the components are
+/// (y, dy/ds) and y_ss = −λ L² e^y, Bratu with λ L²: the fold is at
+/// λ*(L) = λ*(1)/L² (λ*(1) = 3.513830719125162), where dy/ds(0) = 4, i.e.
+/// dy/dx(0) = 4/L. Analytic Jacobians.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct BratuLength;
+
+impl Problem for BratuLength {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn parameter_count(&self) -> usize {
+        2
+    }
+    fn boundary_count(&self) -> usize {
+        2
+    }
+    fn rhs(&self, _s: f64, y: &[f64], p: &[f64], f: &mut [f64]) {
+        f[0] = y[1];
+        f[1] = -p[0] * p[1] * p[1] * y[0].exp();
+    }
+    fn rhs_jacobian(
+        &self,
+        _s: f64,
+        y: &[f64],
+        p: &[f64],
+        mut dfdy: DMatrixViewMut<'_, f64>,
+        mut dfdp: DMatrixViewMut<'_, f64>,
+    ) -> bool {
+        let e = y[0].exp();
+        dfdy[(0, 1)] = 1.0;
+        dfdy[(1, 0)] = -p[0] * p[1] * p[1] * e;
+        dfdp[(1, 0)] = -p[1] * p[1] * e;
+        dfdp[(1, 1)] = -2.0 * p[0] * p[1] * e;
+        true
+    }
+    fn boundary(&self, y0: &[f64], y1: &[f64], _p: &[f64], g: &mut [f64]) {
+        g[0] = y0[0];
+        g[1] = y1[0];
+    }
 }
 
 /// Troesch: y'' = μ sinh(μ y), y(0) = 0, y(1) = 1; `p = [μ]`.

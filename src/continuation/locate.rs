@@ -14,6 +14,9 @@ pub(super) enum Watch {
     BranchPoint,
     Stop(usize),
     Event(usize),
+    /// A component of the tangent: the rate of the parameter with this
+    /// index (the turns of a fold curve).
+    Tangent(usize),
 }
 
 impl<P: Problem + ?Sized> Steps<'_, P> {
@@ -24,6 +27,7 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
             Watch::BranchPoint => c.det.sign * (c.det.log_abs - log_ref).exp(),
             Watch::Stop(i) => c.x.p[q] - self.cont.stops[i],
             Watch::Event(_) => f64::NAN,
+            Watch::Tangent(i) => c.tangent.p[i],
         }
     }
 

@@ -11,13 +11,15 @@
 //! | [`Termination`] | why a run ended: step limit, stop value or event reached, stopped by the observer, or failed with a typed [`Error`](crate::Error) |
 //! | [`Point`] | one solution on the branch, with arclength, dλ/ds, determinant sign and its [`PointKind`] |
 //! | [`BranchSide`] | which side of a branch point [`Continuation::run_from_branch_point`] starts on |
+//! | [`FoldContinuation`] → [`FoldCurve`] | a fold continued in a second parameter (the extended problem, AUTO's ISW = 2), its [`FoldPoint`]s with turns and cusps ([`FoldPointKind`]), [`FoldObserver`] hooks |
 //!
 //! The files: `settings` (the builder and its validation), `run` and
 //! `steps` (the two ways to drive a run), `observer`, `termination`,
 //! `point`, `norm` (the integral inner product), `corrector` (predictor,
 //! chord Newton, tangent), `difference` (F_x·t by central differences),
 //! `step_control`, `locate` (special points),
-//! `switch` (branch switching).
+//! `switch` (branch switching), `fold_extended` (the extended problem of a
+//! fold) and `fold_curve` (its continuation in a second parameter, cusps).
 //!
 //! ## The method
 //!
@@ -67,6 +69,8 @@
 
 mod corrector;
 mod difference;
+mod fold_curve;
+mod fold_extended;
 mod locate;
 mod norm;
 mod observer;
@@ -78,6 +82,7 @@ mod steps;
 mod switch;
 mod termination;
 
+pub use fold_curve::{FoldContinuation, FoldCurve, FoldObserver, FoldPoint, FoldPointKind};
 pub use observer::{Every, Observer};
 pub use point::{Point, PointKind};
 pub use run::Run;

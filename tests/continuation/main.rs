@@ -7,6 +7,7 @@ mod common;
 #[allow(dead_code)]
 mod problems;
 
+mod fold_curve;
 mod observer;
 mod settings;
 mod stops;

@@ -1,0 +1,601 @@
+//! Two-parameter continuation of a fold: [`FoldContinuation`], its points
+//! ([`FoldPoint`]) and their kinds, cusps among them.
+//!
+//! ## The formulation, and why
+//!
+//! The fold is continued as the solution of the *extended* boundary-value
+//! problem (AUTO-07p's ISW = 2): the problem in y, its linearisation in a
+//! null vector v with the solver's free parameters' variations δq, and the
+//! normalisation ∫ v·v ds + δq·δq = 1, with λ (the fold parameter), q and δq
+//! free; the run is an ordinary [`Continuation`] of that 2n-dimensional
+//! problem in the second parameter μ.
+//!
+//! - Reuse: every piece of the engine (collocation, condensation, chord
+//!   corrector, step control, stop values, events, typed termination)
+//!   applies unchanged to the extended problem; the only new code is the
+//!   extended problem and the turns of the curve.
+//! - Robustness: the extended system is regular at a generic fold and stays
+//!   regular through a cusp (there the curve of the extended problem is
+//!   smooth; only its projection on the parameter plane has a cusp), so
+//!   Newton keeps its quadratic rate and pseudo-arclength goes through
+//!   cusps without special care.
+//! - Cost: twice the dimension. The condensation's stage blocks are
+//!   (2mn)², so one factorisation costs about 8 times the original
+//!   problem's; the Jacobian of the v equations needs second derivatives of
+//!   f, taken by central differences of the problem's analytic ∂f/∂y, ∂f/∂p
+//!   (or, without them, by the solver's differences of the extended
+//!   right-hand side, itself a directional difference). A minimally
+//!   augmented system (the original n-dimensional system bordered by one
+//!   row and column, the fold condition a scalar g = 0 from a bordered solve)
+//!   would factorise n-dimensional blocks only, but needs g's derivatives
+//!   (an adjoint solve and F_xx products per Newton step) and a corrector of
+//!   its own. Measured (docs/PERFORMANCE.md): the Bratu fold curve costs
+//!   about 4× a one-parameter step per interval, a fold of the rod (n = 13,
+//!   N = 48) 6–7 ms per step, about 4× a step of the pull: affordable for
+//!   curves of a few hundred steps,
+//!   so the simpler, fully reused formulation was chosen.
+//!
+//! ## Turns and cusps
+//!
+//! Along the fold curve, parametrised by arclength s, the parameter plane
+//! velocity (dλ/ds, dμ/ds) is tangent to the curve of folds. A zero of one
+//! component where the other is not zero is a *turn* of the curve in that
+//! parameter ([`FoldPointKind::Turn`]); a *cusp* ([`FoldPointKind::Cusp`]),
+//! where two folds of the λ-family meet and vanish, is a common zero of
+//! both: the curve's projection stops and reverses. Both are located by the
+//! Illinois iteration on arclength (as folds are in a [`Continuation`]) on
+//! the sign change of dλ/ds (then of dμ/ds) within a step; a located zero
+//! where the other rate is below √(locate tolerance) in the unit tangent is
+//! a cusp (at a generic cusp both rates are O(distance), so at the located
+//! point they are O(tolerance); a turn keeps the other rate O(1)).
+
+use std::fmt;
+use std::ops::ControlFlow;
+
+use super::corrector::Corrected;
+use super::fold_extended::Extended;
+use super::locate::Watch;
+use super::{Continuation, PointKind, Steps, Termination};
+use crate::bvp::system::{State, System};
+use crate::bvp::{NewtonOptions, Problem, Solution, finish, newton};
+use crate::error::{Error, Result};
+
+/// Two-parameter continuation of a fold (the builder; module docs).
+///
+/// ```
+/// use hockle::bvp::Collocation;
+/// use hockle::bvp::classic::BratuLength;
+/// use hockle::continuation::{Continuation, FoldContinuation};
+/// // Bratu on [0, L]: fold at λ*(L) = λ*(1)/L².
+/// let p = BratuLength::default();
+/// let solver = Collocation::new().intervals(10);
+/// let start = solver.solve(&p, |_s: f64| [0.0, 0.0], &[0.0, 1.0])?;
+/// let run = Continuation::new(0).solver(solver.clone()).step(0.1).max_steps(60).run(&p, &start, ())?;
+/// let fold = run.folds().next().expect("a fold");
+/// // Continue the fold in L (p[1]) up to L = 2.
+/// let curve = FoldContinuation::new(0, Continuation::new(1).solver(solver).step(0.1).stop_at(2.0))
+///     .run(&p, fold.solution(), ())?;
+/// let end = curve.last().unwrap();
+/// assert!((end.fold_parameter() - 3.513830719125162 / 4.0).abs() < 1e-8);
+/// # Ok::<(), hockle::Error>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct FoldContinuation {
+    fold: usize,
+    settings: Continuation,
+    cusps: bool,
+}
+
+/// The kind of a point on a fold curve.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FoldPointKind {
+    /// The first point (the start fold, corrected).
+    Start,
+    /// An ordinary step.
+    Regular,
+    /// A located cusp: dλ/ds = dμ/ds = 0, two folds meet and vanish.
+    Cusp,
+    /// A located turn of the curve in the parameter with this index (its
+    /// rate is zero, the other's is not).
+    Turn(usize),
+    /// The second parameter reached a requested value
+    /// ([`Continuation::stop_at`]).
+    ParameterValue,
+    /// A located zero of the user event with this index
+    /// ([`Continuation::stop_when`], evaluated on the extended solution).
+    Event(usize),
+}
+
+/// One point of a fold curve.
+#[derive(Debug, Clone)]
+pub struct FoldPoint {
+    solution: Solution,
+    extended: Solution,
+    fold: usize,
+    second: usize,
+    arclength: f64,
+    velocity: Option<(f64, f64)>,
+    kind: FoldPointKind,
+}
+
+impl FoldPoint {
+    /// The solution of the problem at the fold.
+    #[must_use]
+    pub fn solution(&self) -> &Solution {
+        &self.solution
+    }
+
+    /// The solution of the extended problem: components 0..n are y, n..2n
+    /// the null vector v; parameters p, then δq.
+    #[must_use]
+    pub fn extended(&self) -> &Solution {
+        &self.extended
+    }
+
+    /// The null vector v (∫ v·v + δq·δq = 1) at mesh point `j`.
+    ///
+    /// # Panics
+    /// If `j` is past the last mesh point.
+    #[must_use]
+    pub fn null_vector_at_mesh(&self, j: usize) -> &[f64] {
+        let n = self.solution.dim();
+        &self.extended.at_mesh(j)[n..]
+    }
+
+    /// Every parameter of the problem.
+    #[must_use]
+    pub fn parameters(&self) -> &[f64] {
+        self.solution.parameters()
+    }
+
+    /// λ, the parameter of the fold.
+    #[must_use]
+    pub fn fold_parameter(&self) -> f64 {
+        self.solution.parameters()[self.fold]
+    }
+
+    /// μ, the second (continuation) parameter.
+    #[must_use]
+    pub fn parameter(&self) -> f64 {
+        self.solution.parameters()[self.second]
+    }
+
+    /// Arclength from the start of the curve (the continuation's norm on
+    /// the extended problem).
+    #[must_use]
+    pub fn arclength(&self) -> f64 {
+        self.arclength
+    }
+
+    /// (dλ/ds, dμ/ds) in the unit tangent; `None` at a stop value or event
+    /// (located for the stop alone).
+    #[must_use]
+    pub fn velocity(&self) -> Option<(f64, f64)> {
+        self.velocity
+    }
+
+    /// What the point is.
+    #[must_use]
+    pub fn kind(&self) -> FoldPointKind {
+        self.kind
+    }
+}
+
+impl fmt::Display for FoldPoint {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{:?} lambda={:.15e} mu={:.15e} s={:.6e}",
+            self.kind,
+            self.fold_parameter(),
+            self.parameter(),
+            self.arclength
+        )
+    }
+}
+
+/// Hooks of a fold-curve run: [`point`](Self::point) for every point in
+/// order, [`cusp`](Self::cusp) after it for a cusp, [`finish`](Self::finish)
+/// once. `Break` ends the run with [`Termination::Stopped`], keeping the
+/// points so far. Implemented for `()` and for closures
+/// `FnMut(&FoldPoint) -> ControlFlow<()>`.
+pub trait FoldObserver {
+    /// Every point, in order.
+    fn point(&mut self, point: &FoldPoint) -> ControlFlow<()> {
+        let _ = point;
+        ControlFlow::Continue(())
+    }
+    /// Every located cusp, after [`point`](Self::point).
+    fn cusp(&mut self, cusp: &FoldPoint) -> ControlFlow<()> {
+        let _ = cusp;
+        ControlFlow::Continue(())
+    }
+    /// Once, with the termination.
+    fn finish(&mut self, termination: &Termination) {
+        let _ = termination;
+    }
+}
+
+impl FoldObserver for () {}
+
+impl<F: FnMut(&FoldPoint) -> ControlFlow<()>> FoldObserver for F {
+    fn point(&mut self, point: &FoldPoint) -> ControlFlow<()> {
+        self(point)
+    }
+}
+
+/// A fold curve: every point in order, why it ended, and the work it took.
+#[derive(Debug, Clone)]
+pub struct FoldCurve {
+    points: Vec<FoldPoint>,
+    termination: Termination,
+    accepted: usize,
+    rejected: usize,
+    newton_iterations: u64,
+}
+
+impl FoldCurve {
+    /// Every point, in order.
+    #[must_use]
+    pub fn points(&self) -> &[FoldPoint] {
+        &self.points
+    }
+
+    /// Why the run ended.
+    #[must_use]
+    pub fn termination(&self) -> &Termination {
+        &self.termination
+    }
+
+    /// The located cusps.
+    pub fn cusps(&self) -> impl Iterator<Item = &FoldPoint> {
+        self.points.iter().filter(|p| p.kind == FoldPointKind::Cusp)
+    }
+
+    /// The last point.
+    #[must_use]
+    pub fn last(&self) -> Option<&FoldPoint> {
+        self.points.last()
+    }
+
+    /// Accepted steps.
+    #[must_use]
+    pub fn accepted(&self) -> usize {
+        self.accepted
+    }
+
+    /// Rejected (halved and retried) steps.
+    #[must_use]
+    pub fn rejected(&self) -> usize {
+        self.rejected
+    }
+
+    /// Corrector iterations of every step and location.
+    #[must_use]
+    pub fn newton_iterations(&self) -> u64 {
+        self.newton_iterations
+    }
+}
+
+impl FoldContinuation {
+    /// Continues a fold in the parameter `fold` (λ) along the second
+    /// parameter of `settings` (μ = `settings`' continuation parameter).
+    /// Every setting of `settings` applies to the extended problem, with:
+    /// its weights (length n) used for both y and v; λ and δq added to the
+    /// solver's free parameters; fold and branch-point detection replaced
+    /// by the turns and cusps of the module docs; stop values in μ; events
+    /// evaluated on the extended solution ([`FoldPoint::extended`]).
+    #[must_use]
+    pub fn new(fold: usize, settings: Continuation) -> Self {
+        FoldContinuation {
+            fold,
+            settings,
+            cusps: true,
+        }
+    }
+
+    /// Detect and locate turns and cusps (default on).
+    #[must_use]
+    pub fn detect_cusps(mut self, on: bool) -> Self {
+        self.cusps = on;
+        self
+    }
+
+    /// Runs from `start`, a solution at (or near) a fold in λ (for instance
+    /// a located [`PointKind::Fold`] of a [`Continuation`] run in λ): the
+    /// null vector there is found by one solve with the nearly singular
+    /// Jacobian, the extended problem is corrected by Newton, and the curve
+    /// is continued until the settings' termination.
+    ///
+    /// # Errors
+    /// [`Error::InvalidCount`] if `fold` is not a parameter index, equals
+    /// μ, or is one of the solver's free parameters; bad settings as
+    /// [`Continuation::steps`] (checked before the problem is called);
+    /// [`Error::LengthMismatch`] / [`Error::InvalidCount`] for a start of
+    /// another dimension or m; [`Error::SingularJacobian`] if the start is
+    /// exactly singular; a Newton error if the start is not near a fold.
+    /// Failures after the start end the run with [`Termination::Failed`].
+    pub fn run<P: Problem + ?Sized, O: FoldObserver>(
+        &self,
+        problem: &P,
+        start: &Solution,
+        mut observer: O,
+    ) -> Result<FoldCurve> {
+        let (n, np) = (problem.dim(), problem.parameter_count());
+        let cont = &self.settings;
+        cont.validate(n, np)?;
+        let free = cont.solver.free().to_vec();
+        if self.fold >= np || self.fold == cont.parameter || free.contains(&self.fold) {
+            return Err(Error::InvalidCount {
+                name: "fold parameter",
+                value: self.fold as u64,
+                allowed: "a parameter index below parameter_count(), not the continuation parameter, not a free parameter of the solver",
+            });
+        }
+        if free.contains(&cont.parameter) {
+            return Err(Error::InvalidCount {
+                name: "continuation parameter",
+                value: cont.parameter as u64,
+                allowed: "a parameter that is not already one of the solver's free parameters",
+            });
+        }
+        let tab = cont.solver.validate()?;
+        if start.dim() != n || start.parameters().len() != np {
+            return Err(Error::LengthMismatch {
+                name: "start solution dimension",
+                found: start.dim() as u64,
+                expected: n as u64,
+            });
+        }
+        if start.points_per_interval() != tab.m {
+            return Err(Error::InvalidCount {
+                name: "start solution points per interval",
+                value: start.points_per_interval() as u64,
+                allowed: "the solver's m (solve the start with the same Collocation)",
+            });
+        }
+        let mesh = start.mesh().clone();
+        let mut sys = System::new(
+            problem,
+            mesh.points().to_vec(),
+            tab.clone(),
+            free.clone(),
+            0,
+        )?;
+        sys.linear = cont.solver.linear();
+        let x = State {
+            y: start.y.clone(),
+            k: start.k.clone(),
+            p: start.p.clone(),
+        };
+        let v = null_vector(&mut sys, &x)?;
+        let ext = Extended {
+            problem,
+            free: free.clone(),
+        };
+        let mut ext_free = free.clone();
+        ext_free.push(self.fold);
+        ext_free.extend(np..np + free.len());
+        let ext_start = extended_start(&ext, &sys, &x, &v, &ext_free, cont, mesh.clone())?;
+        let weights = cont.weights.clone().unwrap_or_else(|| vec![1.0; n]);
+        let weights: Vec<f64> = weights.iter().chain(&weights).copied().collect();
+        let ext_cont = cont
+            .clone()
+            .solver(cont.solver.clone().free_parameters(&ext_free))
+            .weights(&weights)
+            .detect_folds(false)
+            .detect_branch_points(false);
+        let mut steps = ext_cont.steps(&ext, &ext_start)?;
+        let mut points = Vec::new();
+        let mut failure = None;
+        let mut stopped = false;
+        let mut previous: Option<(f64, f64, f64)> = None;
+        while let Some(p) = steps.next() {
+            steps.rejections.clear();
+            let mut batch = Vec::new();
+            let regular = matches!(p.kind(), PointKind::Start | PointKind::Regular);
+            let velocity = regular.then(|| (steps.t0.p[self.fold], p.dparameter_ds()));
+            if let (Some((s0, l0, m0)), Some((l1, m1)), true) = (previous, velocity, self.cusps) {
+                match self.turns(&mut steps, p.arclength() - s0, (l0, m0), (l1, m1)) {
+                    Ok(found) => {
+                        for (c, s, kind) in found {
+                            let at = p.arclength() + s;
+                            let vel = (c.tangent.p[self.fold], c.tangent.p[cont.parameter]);
+                            match steps.solution(&c.x, Default::default()) {
+                                Ok(e) => batch.push((e, at, Some(vel), kind)),
+                                Err(e) => failure = Some(e),
+                            }
+                        }
+                    }
+                    Err(e) => failure = Some(e),
+                }
+            }
+            if let Some((l1, m1)) = velocity {
+                previous = Some((p.arclength(), l1, m1));
+            }
+            let kind = match p.kind() {
+                PointKind::Start => FoldPointKind::Start,
+                PointKind::ParameterValue => FoldPointKind::ParameterValue,
+                PointKind::Event(i) => FoldPointKind::Event(i),
+                _ => FoldPointKind::Regular,
+            };
+            batch.push((p.solution().clone(), p.arclength(), velocity, kind));
+            for (e, arclength, velocity, kind) in batch {
+                let solution = match restrict(&mut sys, &e) {
+                    Ok(s) => s,
+                    Err(err) => {
+                        failure = Some(err);
+                        break;
+                    }
+                };
+                let fp = FoldPoint {
+                    solution,
+                    extended: e,
+                    fold: self.fold,
+                    second: cont.parameter,
+                    arclength,
+                    velocity,
+                    kind,
+                };
+                let mut flow = observer.point(&fp);
+                if flow.is_continue() && kind == FoldPointKind::Cusp {
+                    flow = observer.cusp(&fp);
+                }
+                points.push(fp);
+                if flow.is_break() {
+                    stopped = true;
+                    break;
+                }
+            }
+            if stopped || failure.is_some() {
+                break;
+            }
+        }
+        let termination = match (failure, stopped) {
+            (Some(error), _) => Termination::Failed {
+                ds: steps.step_size(),
+                error,
+            },
+            (None, true) => Termination::Stopped,
+            (None, false) => steps
+                .termination
+                .take()
+                .unwrap_or(Termination::MaxSteps(steps.accepted())),
+        };
+        observer.finish(&termination);
+        Ok(FoldCurve {
+            points,
+            termination,
+            accepted: steps.accepted(),
+            rejected: steps.rejected(),
+            newton_iterations: steps.newton_iterations(),
+        })
+    }
+
+    /// The turns and cusps in the step of arclength `ds` that ended at the
+    /// current point, given (dλ/ds, dμ/ds) at its ends; arclengths relative
+    /// to the current point (≤ 0).
+    fn turns<P: Problem + ?Sized>(
+        &self,
+        steps: &mut Steps<'_, P>,
+        ds: f64,
+        (l0, m0): (f64, f64),
+        (l1, m1): (f64, f64),
+    ) -> Result<Vec<(Corrected, f64, FoldPointKind)>> {
+        let mu = self.settings.parameter;
+        let small = self.settings.locate_tolerance.sqrt();
+        let mut found = Vec::new();
+        if l0 * l1 < 0.0 {
+            let (c, s) = steps.locate(Watch::Tangent(self.fold), (-ds, l0), (0.0, l1), 0.0)?;
+            let kind = if c.tangent.p[mu].abs() <= small {
+                FoldPointKind::Cusp
+            } else {
+                FoldPointKind::Turn(self.fold)
+            };
+            found.push((c, s, kind));
+        }
+        let cusp = found.iter().any(|f| f.2 == FoldPointKind::Cusp);
+        if m0 * m1 < 0.0 && !cusp {
+            let (c, s) = steps.locate(Watch::Tangent(mu), (-ds, m0), (0.0, m1), 0.0)?;
+            let kind = if c.tangent.p[self.fold].abs() <= small {
+                FoldPointKind::Cusp
+            } else {
+                FoldPointKind::Turn(mu)
+            };
+            found.push((c, s, kind));
+        }
+        found.sort_by(|a, b| a.1.total_cmp(&b.1));
+        Ok(found)
+    }
+}
+
+/// The null vector (v, δq) of the collocation Jacobian at `x` (λ fixed):
+/// one solve with the nearly singular factorisation, scaled to
+/// ∫ v·v ds + δq·δq = 1 (Gauss rule of the collocation).
+fn null_vector<P: Problem + ?Sized>(sys: &mut System<'_, P>, x: &State) -> Result<State> {
+    let mut y_ref = std::mem::take(&mut sys.y_ref);
+    sys.collocation_values(x, &mut y_ref);
+    sys.y_ref = y_ref;
+    sys.factor(x)?;
+    let mut r = sys.zero_residual();
+    for (i, v) in r
+        .stage
+        .iter_mut()
+        .chain(r.cont.iter_mut())
+        .chain(r.bc.iter_mut())
+        .chain(r.dense.iter_mut())
+        .enumerate()
+    {
+        *v = 1.0 + 0.5 * (i as f64).sin();
+    }
+    let mut v = sys.zero_state();
+    sys.solve(&r, &mut v)?;
+    let mut values = vec![0.0; sys.y_ref.len()];
+    sys.collocation_values(&v, &mut values);
+    let (n, m) = (sys.n, sys.m);
+    let mut sq = 0.0;
+    for j in 0..sys.nn {
+        for k in 0..m {
+            let w = sys.h(j) * sys.tab.b[k];
+            let o = (j * m + k) * n;
+            sq += w * values[o..o + n].iter().map(|a| a * a).sum::<f64>();
+        }
+    }
+    sq += sys.free.iter().map(|&q| v.p[q] * v.p[q]).sum::<f64>();
+    if !(sq.is_finite() && sq > 0.0) {
+        return Err(Error::NonFinite {
+            what: "fold null vector",
+            s: f64::NAN,
+        });
+    }
+    v.scale(1.0 / sq.sqrt());
+    Ok(v)
+}
+
+/// The extended start: (y, v) interleaved per mesh point and stage, (p, δq),
+/// corrected by Newton with λ, q and δq free and μ fixed.
+fn extended_start<P: Problem + ?Sized>(
+    ext: &Extended<'_, P>,
+    sys: &System<'_, P>,
+    x: &State,
+    v: &State,
+    ext_free: &[usize],
+    cont: &Continuation,
+    mesh: crate::bvp::Mesh,
+) -> Result<Solution> {
+    let n = sys.n;
+    let interleave = |a: &[f64], b: &[f64]| -> Vec<f64> {
+        a.chunks(n)
+            .zip(b.chunks(n))
+            .flat_map(|(u, w)| u.iter().chain(w).copied())
+            .collect()
+    };
+    let mut p = x.p.clone();
+    p.extend(sys.free.iter().map(|&q| v.p[q]));
+    let mut xe = State {
+        y: interleave(&x.y, &v.y),
+        k: interleave(&x.k, &v.k),
+        p,
+    };
+    let mut esys = System::new(ext, sys.t.clone(), sys.tab.clone(), ext_free.to_vec(), 0)?;
+    esys.linear = cont.solver.linear();
+    let mut y_ref = std::mem::take(&mut esys.y_ref);
+    esys.collocation_values(&xe, &mut y_ref);
+    esys.y_ref = y_ref;
+    let opts: NewtonOptions = cont.solver.newton_options();
+    let stats = newton(&mut esys, &mut xe, opts, false)?;
+    finish(&mut esys, xe, mesh, stats)
+}
+
+/// The problem's solution (components 0..n, parameters 0..n_p) of an
+/// extended solution.
+fn restrict<P: Problem + ?Sized>(sys: &mut System<'_, P>, e: &Solution) -> Result<Solution> {
+    let n = sys.n;
+    let pick = |a: &[f64]| -> Vec<f64> { a.chunks(2 * n).flat_map(|c| c[..n].to_vec()).collect() };
+    let x = State {
+        y: pick(&e.y),
+        k: pick(&e.k),
+        p: e.p[..sys.np].to_vec(),
+    };
+    finish(sys, x, e.mesh.clone(), e.newton)
+}
