@@ -9,7 +9,7 @@ use core::f64::consts::PI;
 use hockle::Stiffness;
 use hockle::bvp::Collocation;
 use hockle::continuation::{Continuation, PointKind};
-use hockle::elastica::{Branch, Elastica, OutOfPlane};
+use hockle::elastica::{Branch, Diamond, Elastica, OutOfPlane};
 use hockle::rod::{Equilibrium, Rod};
 use hockle::special::Modulus;
 
@@ -56,86 +56,22 @@ fn guess(e: Elastica) -> impl Fn(f64) -> [f64; 13] {
     }
 }
 
-#[test]
-fn the_primary_diamond_is_the_rods_out_of_plane_branch_point() {
-    let stiffness = Stiffness::nikolai(10.0, 0.05).unwrap();
-    let scale = (8.0 * PI).powi(2);
-    let diamonds = OutOfPlane::new(4, stiffness)
-        .unwrap()
-        .diamonds(Branch::Upsilon, 0.8)
-        .unwrap();
-    assert_eq!(diamonds.len(), 1);
-    let diamond = diamonds[0];
-
-    // the rod on the primary υ-branch below the diamond, continued in F
-    let rod = Rod::new(4, PI / 2.0, stiffness).unwrap();
-    let e = Elastica::upsilon(4, Modulus::from_k(0.96).unwrap()).unwrap();
-    assert!(e.force() < diamond.force());
-    let solver = Collocation::new().intervals(128);
-    let start = solver
-        .solve(&rod, guess(e), &[e.force(), e.extension(), PI / 2.0])
-        .unwrap();
-    let first = Equilibrium::new(rod, start.clone()).unwrap();
-    assert!((first.force() / e.force() - 1.0).abs() < 1e-8);
-    let mut w = vec![1.0; 13];
-    w[7..10].fill(1.0 / (scale * scale));
-    w[10..13].fill(1e-3);
-    let branch = Continuation::new(Rod::FORCE)
-        .solver(solver)
-        .weights(&w)
-        .parameter_weight(1.0 / (scale * scale))
-        .step(0.01)
-        .step_bounds(1e-9, 0.05)
-        .max_steps(300)
-        .stop_at(0.8 * scale)
-        .run(&rod, &start, ())
-        .unwrap();
-    let bps: Vec<Equilibrium> = branch
-        .points()
-        .iter()
-        .filter(|p| p.kind() == PointKind::BranchPoint)
-        .map(|p| Equilibrium::new(rod, p.solution().clone()).unwrap())
-        .collect();
-    assert_eq!(bps.len(), 1, "{:?}", branch.termination());
-    let rel = (bps[0].force() / diamond.force() - 1.0).abs();
-    assert!(
-        rel < DIAMOND_FORCE_REL,
-        "rod {} vs diamond {}: {rel:e}",
-        bps[0].force(),
-        diamond.force()
-    );
-    assert!(bps[0].planarity() < 1e-10);
-    eprintln!("primary υ diamond: rod vs elastica {rel:e} in force");
-}
-
-/// The rod's branch points near `diamond` on its planar branch: the rod is
-/// started from the planar solution at q = −ln(1 − k²) a little before the
-/// diamond (q − 0.2, or half-way to the fold) and continued in the force
-/// past it.
-fn rod_branch_points_near(stiffness: Stiffness, diamond: hockle::elastica::Diamond) -> Vec<f64> {
+/// The forces of the 3D rod's branch points (θ0 = 90°, 128 collocation
+/// intervals) on the planar branch through `e`, continued in the force from
+/// `e` towards `stop`.
+fn rod_branch_points(stiffness: Stiffness, e: Elastica, stop: f64) -> Vec<f64> {
     let scale = (8.0 * PI).powi(2);
     let rod = Rod::new(4, PI / 2.0, stiffness).unwrap();
-    let Branch::Secondary { j, arm } = diamond.branch() else {
-        unreachable!()
-    };
-    let q_of = |m: Modulus| -m.complement().ln();
-    let q_d = q_of(diamond.solution().elliptic_modulus());
-    let fold = hockle::elastica::secondary_fold(4, j).unwrap();
-    let q = q_d - (0.5 * (q_d - q_of(fold.solution().elliptic_modulus()))).min(0.2);
-    let md = Modulus::from_complement((-q).exp()).unwrap();
-    let e = Elastica::secondary_arm(4, j, arm, md).unwrap();
     let solver = Collocation::new().intervals(128);
     let start = solver
         .solve(&rod, guess(e), &[e.force(), e.extension(), PI / 2.0])
         .unwrap();
     let first = Equilibrium::new(rod, start.clone()).unwrap();
     assert!(
-        (first.force() / e.force() - 1.0).abs() < 1e-8 && first.loops() == Some(j),
-        "{e}: the rod converged elsewhere ({} loops, F = {})",
-        first.loops().unwrap_or(0),
+        (first.force() / e.force() - 1.0).abs() < 1e-8 && first.planarity() < 1e-12,
+        "{e}: the rod converged elsewhere (F = {})",
         first.force()
     );
-    let up = diamond.force() > e.force();
     let mut w = vec![1.0; 13];
     w[7..10].fill(1.0 / (scale * scale));
     w[10..13].fill(1e-3);
@@ -143,10 +79,10 @@ fn rod_branch_points_near(stiffness: Stiffness, diamond: hockle::elastica::Diamo
         .solver(solver)
         .weights(&w)
         .parameter_weight(1.0 / (scale * scale))
-        .step(if up { 0.01 } else { -0.01 })
+        .step(if stop > e.force() { 0.01 } else { -0.01 })
         .step_bounds(1e-9, 0.05)
         .max_steps(300)
-        .stop_at(diamond.force() * if up { 1.05 } else { 0.95 })
+        .stop_at(stop)
         .run(&rod, &start, ())
         .unwrap();
     branch
@@ -159,6 +95,85 @@ fn rod_branch_points_near(stiffness: Stiffness, diamond: hockle::elastica::Diamo
         .collect()
 }
 
+/// Asserts that the rod has exactly the diamonds `want` between the
+/// start `e` and `stop`, each to [`DIAMOND_FORCE_REL`].
+fn assert_rod_agrees(stiffness: Stiffness, e: Elastica, stop: f64, want: &[Diamond]) {
+    let got = rod_branch_points(stiffness, e, stop);
+    assert_eq!(got.len(), want.len(), "{e}: rod {got:?}, diamonds {want:?}");
+    for (f, d) in got.iter().zip(want) {
+        let rel = (f / d.force() - 1.0).abs();
+        assert!(rel < DIAMOND_FORCE_REL, "{d}: rod {f}, {rel:e}");
+        eprintln!("{d}: rod vs elastica {rel:e} in force");
+    }
+}
+
+#[test]
+fn the_primary_diamonds_are_the_rods_out_of_plane_branch_points() {
+    let scale = (8.0 * PI).powi(2);
+    let m = |k: f64| Modulus::from_k(k).unwrap();
+    // (stiffness, branch, start k, stop F/(2πn)²): the paper's rod on υ and
+    // α, and a softer twist (C/B = 1.1) whose υ diamond sits at low force
+    let cases = [
+        (
+            Stiffness::nikolai(10.0, 0.05).unwrap(),
+            Branch::Upsilon,
+            0.96,
+            0.8,
+        ),
+        (
+            Stiffness::nikolai(10.0, 0.05).unwrap(),
+            Branch::Alpha,
+            0.8,
+            0.45,
+        ),
+        (
+            Stiffness::new(10.0, 1.0, 1.1).unwrap(),
+            Branch::Upsilon,
+            0.4,
+            0.09,
+        ),
+    ];
+    for (stiffness, branch, k, stop) in cases {
+        let e = match branch {
+            Branch::Upsilon => Elastica::upsilon(4, m(k)),
+            _ => Elastica::alpha(4, m(k)),
+        }
+        .unwrap();
+        let want: Vec<Diamond> = OutOfPlane::new(4, stiffness)
+            .unwrap()
+            .diamonds(branch, stop)
+            .unwrap()
+            .into_iter()
+            .filter(|d| d.force() > e.force())
+            .collect();
+        assert_eq!(want.len(), 1, "{branch}: {want:?}");
+        assert_rod_agrees(stiffness, e, stop * scale, &want);
+    }
+}
+
+/// The rod's branch points near `diamond` on its secondary branch: the rod
+/// is started from the planar solution at q = −ln(1 − k²) a little before
+/// the diamond (q − 0.2, or half-way to the fold) and continued in the
+/// force 5 % past it.
+fn check_secondary(stiffness: Stiffness, diamond: Diamond) {
+    let Branch::Secondary { j, arm } = diamond.branch() else {
+        unreachable!()
+    };
+    let q_of = |m: Modulus| -m.complement().ln();
+    let q_d = q_of(diamond.solution().elliptic_modulus());
+    let fold = hockle::elastica::secondary_fold(4, j).unwrap();
+    let q = q_d - (0.5 * (q_d - q_of(fold.solution().elliptic_modulus()))).min(0.2);
+    let md = Modulus::from_complement((-q).exp()).unwrap();
+    let e = Elastica::secondary_arm(4, j, arm, md).unwrap();
+    let stop = diamond.force()
+        * if diamond.force() > e.force() {
+            1.05
+        } else {
+            0.95
+        };
+    assert_rod_agrees(stiffness, e, stop, &[diamond]);
+}
+
 #[test]
 fn the_secondary_diamonds_are_the_rods_branch_points() {
     use hockle::elastica::Arm;
@@ -167,13 +182,7 @@ fn the_secondary_diamonds_are_the_rods_branch_points() {
     let mut checked = 0;
     for (j, arm) in [(3, Arm::Lower), (3, Arm::Upper), (2, Arm::Lower)] {
         for d in oop.diamonds(Branch::Secondary { j, arm }, 0.6).unwrap() {
-            let bps = rod_branch_points_near(stiffness, d);
-            let best = bps
-                .iter()
-                .map(|f| (f / d.force() - 1.0).abs())
-                .fold(f64::INFINITY, f64::min);
-            assert!(best < DIAMOND_FORCE_REL, "{d}: rod branch points {bps:?}");
-            eprintln!("{d}: rod vs elastica {best:e} in force");
+            check_secondary(stiffness, d);
             checked += 1;
         }
     }
