@@ -1,102 +1,5 @@
-//! Out-of-plane instability of the planar elastica: the paper's diamonds.
-//!
-//! The planar solutions of [`Elastica`] are equilibria of the 3D Kirchhoff
-//! rod (the paper's eq. bal, eq. constit with u10 = u30 = 0, u20 = κ0 = 2πn,
-//! B = 1) in the plane spanned by d1 and d3, with d2 the constant normal.
-//! Where the linearised equations have a nontrivial out-of-plane solution
-//! satisfying the zero-moment end conditions (eq. bcs), a branch of 3D
-//! solutions crosses the planar branch: the pitchfork the paper marks with a
-//! diamond on its Fig. spring ("the location of these diamonds, but not the
-//! curves, depends on C").
-//!
-//! # The planar base state
-//!
-//! With u = u1 + Ωs and Jacobi functions of modulus k, the tangent
-//! t = d3 = sin φ i + cos φ k makes the angle φ with the force F = F k
-//! (F = k²Ω² the tension; the end s = 1 is pulled along +k), and
-//!
-//! ```text
-//! κ = φ′ = 2Ω dn u,   cos φ = 2 sn²u − 1,   sin φ = −2 sn u cn u       (eq4)
-//! u_base = (0, κ, 0),   m_base = (0, κ − κ0, 0),   f = (f1, 0, f3)
-//! f1 = F·d1 = −F sin φ,   f3 = F·d3 = F cos φ,   d1 = cos φ i − sin φ k,  d2 = j
-//! ```
-//!
-//! (components in the material frame; φ″ = F sin φ is the moment balance,
-//! so the elastica's γ = cos ϑ is −cos φ). The ends have κ = κ0 (eq6), so
-//! m_base vanishes there.
-//!
-//! # The linearised out-of-plane equations
-//!
-//! Perturb the frame by a small rotation ψ (δd_i = ψ × d_i, material
-//! components ψ1, ψ2, ψ3), the moment by δm, the (constant) force by δF and
-//! the centreline by δr. With δu = ψ′ + u × ψ, δm1 = A δu1, δm3 = C δu3,
-//! δf = δF·d_i + F·(ψ × d_i), the balance laws m′ + u × m + e3 × f = 0,
-//! f′ + u × f = 0 (eq. bal in the material frame) split into an in-plane
-//! part (ψ2, δm2, δf1, δf3) and the out-of-plane part, in
-//! y = (ψ1, ψ3, m1, m3, w) with m_i = δm_i, w = δr·j and P = δF·j:
-//!
-//! ```text
-//! ψ1′ = m1/A − κ ψ3
-//! ψ3′ = m3/C + κ ψ1
-//! m1′ = −(κ − (κ − κ0)/C) m3 + f3 ψ1 − f1 ψ3 + P        (δf2 = P + f3ψ1 − f1ψ3)
-//! m3′ = (κ − (κ − κ0)/A) m1
-//! w′  = −ψ1
-//! ```
-//!
-//! out-of-plane bending about d1 (A) coupled to twist (C) through the base
-//! curvature κ and the prestress κ − κ0. The out-of-plane part of eq. bcs:
-//! w = 0 at both ends, δM = 0 at both ends (δM = δm there since m_base = 0),
-//! P free (the end's force is a reaction), and the rotation about k is
-//! fixed (d1(1)·i = 0 in the paper; any gauge will do).
-//!
-//! # The determinant
-//!
-//! At s = 0 the data are m1 = m3 = w = 0 and three free values: ψ(0) in the
-//! plane and P. Two of the three solutions are rigid motions of the whole
-//! planar equilibrium, exact solutions of the system above:
-//!
-//! - R_k: the rotation about the force line, ψ = k, m = 0, w = x(s), P = 0.
-//!   It meets every end condition: the symmetry the gauge removes.
-//! - R_i: the rotation about i, ψ = i, m = 0, w = −z(s), P = −F (the force
-//!   turns with the rod). It meets all end conditions but w(1) = −Δz.
-//!
-//! The third, Y_P, starts from ψ = 0 with P = 1. Along any solution the
-//! spatial moment obeys δM′ = −δt × F − t × δF, so k·δM(s) = k·δM(0) − P x(s):
-//! k·δM(1) = 0 holds by itself (x(1) = 0), and of δM(1) = 0 only
-//! i·δM(1) = m1 cos φ + m3 sin φ is a condition. In the basis {R_i, Y_P} the
-//! end conditions (i·δM(1), w(1)) have the determinant Δz · D with
-//!
-//! ```text
-//! D(k) = i·δM(1) of Y_P = m1(1) cos φ(1) + m3(1) sin φ(1)
-//! ```
-//!
-//! so away from Δz = 0 (the unstressed ring) the planar solution has an
-//! out-of-plane neighbour exactly where D = 0. [`OutOfPlane::determinant`]
-//! computes D; [`OutOfPlane::diamonds`] locates its sign changes along a
-//! branch.
-//!
-//! # Numerics
-//!
-//! The system is integrated from s = 0 to 1 by Gauss–Legendre collocation
-//! with six stages (order 12; the stage system of the linear ODE is solved
-//! directly), with step-doubling error control to a relative tolerance
-//! (default 1e-13 of the largest component). The coefficients come from
-//! [`jacobi`] at the collocation nodes: no interpolation, no base-state
-//! integration. Along a branch, D is sampled on a grid in the parameter σ of
-//! [`Trace`](super::Trace) (q = −ln(1 − k²), σ² on secondary arms) and each
-//! sign change is refined by the Illinois variant of regula falsi to
-//! |Δk| ≤ 1e-10. Two sign changes closer than the grid spacing can be missed
-//! (then raise [`OutOfPlane::grid`]).
-//!
-//! # Checks
-//!
-//! `tests/elastica/out_of_plane.rs`: the two rigid motions are reproduced by
-//! the integrator, the first integrals k·δM = −P x and i·δM = P z − F w
-//! (spatial balance, independent of the material-frame linearisation) hold
-//! along Y_P, and the diamonds do not move when the tolerance changes.
-//! `tests/rod/diamonds.rs`: the 3D rod at θ0 = 90° (quaternion collocation
-//! and continuation, an independent model) has its branch points where D
-//! vanishes.
+//! Out-of-plane instability of the planar elastica: the paper's diamonds
+//! ([`OutOfPlane`], whose docs carry the derivation).
 
 use core::f64::consts::PI;
 
@@ -113,8 +16,11 @@ use crate::special::jacobi;
 const STAGES: usize = 6;
 /// Unknowns of the out-of-plane system.
 const DIM: usize = 5;
-/// The diamonds are located to this absolute accuracy in k.
+/// The diamonds are located to this absolute accuracy in k …
 const K_TOLERANCE: f64 = 1e-10;
+/// … and this relative accuracy in the force (the bracket's width; the
+/// determinant's own resolution may be coarser, see the module docs).
+const F_TOLERANCE: f64 = 1e-12;
 /// Default relative tolerance of the integration.
 const DEFAULT_TOLERANCE: f64 = 1e-13;
 /// Default number of grid intervals along a branch.
@@ -125,6 +31,107 @@ const MAX_STEPS: usize = 100_000;
 /// The out-of-plane stability problem of the planar elastica of n coils
 /// for given stiffnesses (only A/B and C/B matter: the elastica is in units
 /// of B).
+///
+/// The planar solutions of [`Elastica`] are equilibria of the 3D Kirchhoff
+/// rod (the paper's eq. bal, eq. constit with u10 = u30 = 0, u20 = κ0 = 2πn,
+/// B = 1) in the plane spanned by d1 and d3, with d2 the constant normal.
+/// Where the linearised equations have a nontrivial out-of-plane solution
+/// satisfying the zero-moment end conditions (eq. bcs), a branch of 3D
+/// solutions crosses the planar branch: the pitchfork the paper marks with a
+/// diamond on its Fig. spring ("the location of these diamonds, but not the
+/// curves, depends on C").
+///
+/// # The planar base state
+///
+/// With u = u1 + Ωs and Jacobi functions of modulus k, the tangent
+/// t = d3 = sin φ i + cos φ k makes the angle φ with the force F = F k
+/// (F = k²Ω² the tension; the end s = 1 is pulled along +k), and
+///
+/// ```text
+/// κ = φ′ = 2Ω dn u,   cos φ = 2 sn²u − 1,   sin φ = −2 sn u cn u       (eq4)
+/// u_base = (0, κ, 0),   m_base = (0, κ − κ0, 0),   f = (f1, 0, f3)
+/// f1 = F·d1 = −F sin φ,   f3 = F·d3 = F cos φ,   d1 = cos φ i − sin φ k,  d2 = j
+/// ```
+///
+/// (components in the material frame; φ″ = F sin φ is the moment balance,
+/// so the elastica's γ = cos ϑ is −cos φ). The ends have κ = κ0 (eq6), so
+/// m_base vanishes there.
+///
+/// # The linearised out-of-plane equations
+///
+/// Perturb the frame by a small rotation ψ (δd_i = ψ × d_i, material
+/// components ψ1, ψ2, ψ3), the moment by δm, the (constant) force by δF and
+/// the centreline by δr. With δu = ψ′ + u × ψ, δm1 = A δu1, δm3 = C δu3,
+/// δf = δF·d_i + F·(ψ × d_i), the balance laws m′ + u × m + e3 × f = 0,
+/// f′ + u × f = 0 (eq. bal in the material frame) split into an in-plane
+/// part (ψ2, δm2, δf1, δf3) and the out-of-plane part, in
+/// y = (ψ1, ψ3, m1, m3, w) with m_i = δm_i, w = δr·j and P = δF·j:
+///
+/// ```text
+/// ψ1′ = m1/A − κ ψ3
+/// ψ3′ = m3/C + κ ψ1
+/// m1′ = −(κ − (κ − κ0)/C) m3 + f3 ψ1 − f1 ψ3 + P        (δf2 = P + f3ψ1 − f1ψ3)
+/// m3′ = (κ − (κ − κ0)/A) m1
+/// w′  = −ψ1
+/// ```
+///
+/// out-of-plane bending about d1 (A) coupled to twist (C) through the base
+/// curvature κ and the prestress κ − κ0. The out-of-plane part of eq. bcs:
+/// w = 0 at both ends, δM = 0 at both ends (δM = δm there since m_base = 0),
+/// P free (the end's force is a reaction), and the rotation about k is
+/// fixed (d1(1)·i = 0 in the paper; any gauge will do).
+///
+/// # The determinant
+///
+/// At s = 0 the data are m1 = m3 = w = 0 and three free values: ψ(0) in the
+/// plane and P. Two of the three solutions are rigid motions of the whole
+/// planar equilibrium, exact solutions of the system above:
+///
+/// - R_k: the rotation about the force line, ψ = k, m = 0, w = x(s), P = 0.
+///   It meets every end condition: the symmetry the gauge removes.
+/// - R_i: the rotation about i, ψ = i, m = 0, w = −z(s), P = −F (the force
+///   turns with the rod). It meets all end conditions but w(1) = −Δz.
+///
+/// The third, Y_P, starts from ψ = 0 with P = 1. Along any solution the
+/// spatial moment obeys δM′ = −δt × F − t × δF, so k·δM(s) = k·δM(0) − P x(s):
+/// k·δM(1) = 0 holds by itself (x(1) = 0), and of δM(1) = 0 only
+/// i·δM(1) = m1 cos φ + m3 sin φ is a condition. In the basis {R_i, Y_P} the
+/// end conditions (i·δM(1), w(1)) have the determinant Δz · D with
+///
+/// ```text
+/// D(k) = i·δM(1) of Y_P = m1(1) cos φ(1) + m3(1) sin φ(1)
+/// ```
+///
+/// so away from Δz = 0 (the unstressed ring) the planar solution has an
+/// out-of-plane neighbour exactly where D = 0. [`OutOfPlane::determinant`]
+/// computes D; [`OutOfPlane::diamonds`] locates its sign changes along a
+/// branch.
+///
+/// # Numerics
+///
+/// The system is integrated from s = 0 to 1 by Gauss–Legendre collocation
+/// with six stages (order 12; the stage system of the linear ODE is solved
+/// directly), with step-doubling error control to a relative tolerance
+/// (default 1e-13 of the largest component). The coefficients come from
+/// [`jacobi`] at the collocation nodes: no interpolation, no base-state
+/// integration. Along a branch, D is sampled on a grid in the parameter σ of
+/// [`Trace`](super::Trace) (q = −ln(1 − k²), σ² on secondary arms) and each
+/// sign change is refined by the Illinois variant of regula falsi to
+/// |Δk| ≤ 1e-10 and a bracket of 1e-12 relative in F (near k = 1, where
+/// F ∝ K², a step of 1e-10 in k is a large step in F). Two sign changes closer than the grid spacing can be missed
+/// (then raise [`OutOfPlane::grid`]).
+///
+/// # Checks
+///
+/// `tests/elastica/out_of_plane.rs`: the two rigid motions are reproduced by
+/// the integrator, the first integrals k·δM = −P x and i·δM = P z − F w
+/// (spatial balance, independent of the material-frame linearisation) hold
+/// along Y_P, and the diamonds do not move when the tolerance changes.
+/// `tests/rod/diamonds.rs`: the 3D rod at θ0 = 90° (quaternion collocation
+/// and continuation, an independent model) has its branch points where D
+/// vanishes.
+///
+/// # Example
 ///
 /// ```
 /// use hockle::{Stiffness, elastica::{Branch, OutOfPlane}};
@@ -370,7 +377,7 @@ impl OutOfPlane {
 
     /// Integrates the out-of-plane system along the solution `e` from s = 0
     /// with the data `start` = (ψ1, ψ3, m1, m3, w) (material components, see
-    /// the [module docs](self)) and out-of-plane force P = `p` up to
+    /// the [type docs](OutOfPlane)) and out-of-plane force P = `p` up to
     /// s = `end` ∈ [0, 1], and returns y(end).
     ///
     /// # Errors
@@ -439,7 +446,7 @@ impl OutOfPlane {
     /// D at the planar solution `e`: the out-of-plane moment i·δM(1) left at
     /// the far end by the solution that starts with no rotation, moment or
     /// displacement under a unit out-of-plane force (see the
-    /// [module docs](self)). D = 0 where `e` has an out-of-plane neighbour;
+    /// [type docs](OutOfPlane)). D = 0 where `e` has an out-of-plane neighbour;
     /// D = O(k²) at the unstressed ring (k = 0), where Δz = 0 and the rigid
     /// rotation about i no longer turns the force.
     ///
@@ -454,7 +461,8 @@ impl OutOfPlane {
     /// The diamonds on `branch` (primary υ or α, a secondary arm, or ϑ_j —
     /// its first root of eq81, as in [`Trace`](super::Trace)) with
     /// F/(2πn)² ≤ `max_force_scaled`, in order along the branch from where
-    /// it starts, each located to ≤ 1e-10 in k.
+    /// it starts, each located to ≤ 1e-10 in k and a bracket of 1e-12
+    /// relative in F.
     ///
     /// # Errors
     /// As [`Trace::run`](super::Trace::run) for the branch and the force
@@ -527,7 +535,8 @@ impl OutOfPlane {
         Ok(out)
     }
 
-    /// Illinois regula falsi on σ until the bracket spans ≤ 1e-10 in k.
+    /// Illinois regula falsi on σ until the bracket spans ≤ 1e-10 in k and
+    /// ≤ 1e-12 relative in F (or σ's rounding).
     fn refine(
         &self,
         at: &impl Fn(f64) -> Result<Elastica>,
@@ -537,7 +546,11 @@ impl OutOfPlane {
         let (mut a, mut ea, mut fa) = lo;
         let (mut b, mut eb, mut fb) = hi;
         for _ in 0..200 {
-            if (eb.modulus() - ea.modulus()).abs() <= 0.5 * K_TOLERANCE {
+            // near k = 1 a step of 1e-10 in k is a large step in F ∝ K²:
+            // also close the bracket in the force
+            if (eb.modulus() - ea.modulus()).abs() <= 0.5 * K_TOLERANCE
+                && (eb.force() - ea.force()).abs() <= F_TOLERANCE * eb.force()
+            {
                 break;
             }
             let mut c = b - fb * (b - a) / (fb - fa);

@@ -180,11 +180,16 @@ fn the_secondary_diamonds_are_the_rods_branch_points() {
     let stiffness = Stiffness::nikolai(10.0, 0.05).unwrap();
     let oop = OutOfPlane::new(4, stiffness).unwrap();
     let mut checked = 0;
-    for (j, arm) in [(3, Arm::Lower), (3, Arm::Upper), (2, Arm::Lower)] {
-        for d in oop.diamonds(Branch::Secondary { j, arm }, 0.6).unwrap() {
+    for (j, arm, max) in [
+        (3, Arm::Lower, 0.6),
+        (3, Arm::Upper, 0.6),
+        (2, Arm::Lower, 0.6),
+        (1, Arm::Lower, 0.3),
+    ] {
+        for d in oop.diamonds(Branch::Secondary { j, arm }, max).unwrap() {
             check_secondary(stiffness, d);
             checked += 1;
         }
     }
-    assert!(checked >= 4, "{checked} diamonds checked");
+    assert!(checked >= 5, "{checked} diamonds checked");
 }
