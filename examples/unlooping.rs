@@ -8,7 +8,8 @@
 //! Written on the `spring` scene: the 3D rod answers the spring, the
 //! elastica model gives the branches it visits. Writes `unlooping.csv` (one
 //! row per continuation point, in order) and `unlooping.svg` (the 3D curve,
-//! the elastica branches, the folds) into DIR (default
+//! the elastica branches, the folds, the elastica's out-of-plane instability
+//! points ("diamonds", `elastica::OutOfPlane`) on the branches drawn) into DIR (default
 //! `$CARGO_TARGET_DIR/hockle`, else `target/hockle` under the crate).
 
 use std::error::Error;
@@ -19,6 +20,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use hockle::continuation::Point;
+use hockle::elastica::{Branch, Diamond, OutOfPlane};
 use hockle::spring::{ElasticaModel, RodModel, Spring, Target};
 use hockle::{FoldKind, ForceExtension};
 
@@ -65,6 +67,14 @@ fn main() -> Result<(), Box<dyn Error>> {
     let elapsed = start.elapsed();
     eprintln!();
     let scaffold = ElasticaModel::default().scaffold(&spring, MAX_FORCE_SCALED)?;
+    // the diamonds on the branches of the scaffold: primary υ (j = n) and
+    // the secondary υ-branches j < n
+    let n = spring.coils();
+    let diamonds: Vec<Diamond> = OutOfPlane::new(n, spring.stiffness())?
+        .all_diamonds(MAX_FORCE_SCALED)?
+        .into_iter()
+        .filter(|d| d.branch() != Branch::Alpha)
+        .collect();
 
     println!("{response} in {elapsed:.2?}");
     let s = spring.scale();
@@ -97,6 +107,17 @@ fn main() -> Result<(), Box<dyn Error>> {
             ),
         }
     }
+    for d in &diamonds {
+        let j = match d.branch() {
+            Branch::Secondary { j, .. } => j,
+            _ => n,
+        };
+        println!(
+            "diamond j={j} extension={:.10} force_scaled={:.10}",
+            d.extension(),
+            d.force_scaled()
+        );
+    }
     match response.loops_lost() {
         Some(l) => println!("loops lost: {l}"),
         None => println!("loops lost: not defined (a stretch without a loop count)"),
@@ -105,7 +126,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let csv = out.join("unlooping.csv");
     let svg = out.join("unlooping.svg");
     write_csv(&response, &csv)?;
-    std::fs::write(&svg, plot(&response, &scaffold))?;
+    std::fs::write(&svg, plot(&response, &scaffold, &diamonds))?;
     println!("wrote {} and {}", csv.display(), svg.display());
     Ok(())
 }
@@ -133,7 +154,11 @@ const PALETTE: [&str; 4] = ["#0072B2", "#009E73", "#CC79A7", "#E69F00"];
 
 /// The figure as SVG, written directly so that every coordinate keeps three
 /// decimals of a pixel (no staircase on the steep stretches).
-fn plot(response: &hockle::spring::Response, scaffold: &[ForceExtension]) -> String {
+fn plot(
+    response: &hockle::spring::Response,
+    scaffold: &[ForceExtension],
+    diamonds: &[Diamond],
+) -> String {
     let (w, h) = (900.0, 640.0);
     let (left, right, top, bottom) = (70.0, 20.0, 50.0, 90.0);
     let (pw, ph) = (w - left - right, h - top - bottom);
@@ -241,8 +266,24 @@ fn plot(response: &hockle::spring::Response, scaffold: &[ForceExtension]) -> Str
             y(f.point.force_scaled(scale))
         );
     }
+    for d in diamonds {
+        let (cx, cy) = (x(d.extension()), y(d.force_scaled()));
+        let _ = writeln!(
+            s,
+            r#"<polygon points="{:.3},{cy:.3} {cx:.3},{:.3} {:.3},{cy:.3} {cx:.3},{:.3}" fill="white" stroke="black" stroke-width="1.2"/>"#,
+            cx - 6.0,
+            cy - 6.0,
+            cx + 6.0,
+            cy + 6.0
+        );
+    }
     legend.push(("maximum-force fold".to_string(), "#D55E00", "dot"));
     legend.push(("minimum-force fold".to_string(), "#56B4E9", "dot"));
+    legend.push((
+        "elastica out-of-plane instability (diamond)".to_string(),
+        "white",
+        "diamond",
+    ));
     let (lx, ly) = (left + 12.0, top + 12.0);
     let _ = writeln!(
         s,
@@ -257,6 +298,16 @@ fn plot(response: &hockle::spring::Response, scaffold: &[ForceExtension]) -> Str
                 r#"<line x1="{}" y1="{yy}" x2="{}" y2="{yy}" stroke="{colour}" stroke-width="2.5"/>"#,
                 lx + 8.0,
                 lx + 32.0
+            );
+        } else if *kind == "diamond" {
+            let cx = lx + 20.0;
+            let _ = write!(
+                s,
+                r#"<polygon points="{:.3},{yy} {cx},{:.3} {:.3},{yy} {cx},{:.3}" fill="{colour}" stroke="black" stroke-width="1.2"/>"#,
+                cx - 6.0,
+                yy - 6.0,
+                cx + 6.0,
+                yy + 6.0
             );
         } else {
             let _ = write!(

@@ -38,6 +38,7 @@
 //! | [`secondary_fold`] → [`SecondaryFold`] | the fold (smallest k) of a secondary branch | — |
 //! | [`Trace`] | a whole branch as a [`ForceExtension`](crate::ForceExtension) | figures |
 //! | [`series`] | small-k expansions and linear responses | eq9–eq12 |
+//! | [`OutOfPlane`] → [`Diamond`] | out-of-plane instability points of the planar branches | Fig. spring (diamonds) |
 //!
 //! **One family, two arms.** Put the end of the rod at a distance t (in
 //! u = Ωs) from a curvature extremum. Then eq7 becomes
@@ -110,6 +111,7 @@ mod bifurcation;
 mod family;
 mod integrals;
 mod nonsymmetric;
+mod out_of_plane;
 mod secondary;
 pub mod series;
 mod solution;
@@ -117,6 +119,7 @@ mod symmetric;
 mod trace;
 
 pub use bifurcation::{Bifurcation, bifurcation};
+pub use out_of_plane::{Diamond, OutOfPlane};
 pub use secondary::{SecondaryFold, secondary_fold};
 pub use solution::{Arm, Branch, Elastica, Shape};
 pub use symmetric::Symmetric;
@@ -133,4 +136,6 @@ const _: fn() = || {
     send_sync::<Arm>();
     send_sync::<Branch>();
     send_sync::<Shape>();
+    send_sync::<OutOfPlane>();
+    send_sync::<Diamond>();
 };

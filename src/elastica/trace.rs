@@ -163,7 +163,7 @@ impl Trace {
 }
 
 /// A branch as a function of the parameter σ ∈ [0, 1].
-struct Path {
+pub(crate) struct Path {
     n: u32,
     branch: Branch,
     q0: f64,
@@ -171,7 +171,7 @@ struct Path {
 }
 
 impl Path {
-    fn new(n: u32, branch: Branch) -> Result<Self> {
+    pub(crate) fn new(n: u32, branch: Branch) -> Result<Self> {
         let (q0, squared) = match branch {
             Branch::Upsilon | Branch::Alpha => (0.0, false),
             Branch::Theta { j } => {
@@ -198,7 +198,7 @@ impl Path {
         })
     }
 
-    fn at_q(&self, q: f64) -> Result<Elastica> {
+    pub(crate) fn at_q(&self, q: f64) -> Result<Elastica> {
         // m = 1 − e^−q from expm1 while it is small: forces down to
         // F ∝ q ≈ 1e-300 stay resolved
         let md = if q < core::f64::consts::LN_2 {
@@ -222,13 +222,13 @@ impl Path {
         }
     }
 
-    fn q_of(&self, sigma: f64, q_end: f64) -> f64 {
+    pub(crate) fn q_of(&self, sigma: f64, q_end: f64) -> f64 {
         let s = if self.squared { sigma * sigma } else { sigma };
         self.q0 + (q_end - self.q0) * s
     }
 
     /// The parameter q where the force reaches `limit_scaled`·`scale`.
-    fn q_end(&self, limit_scaled: f64, scale: f64) -> Result<f64> {
+    pub(crate) fn q_end(&self, limit_scaled: f64, scale: f64) -> Result<f64> {
         let fmax = limit_scaled * scale;
         let start = self.at_q(self.q0)?;
         if start.force() >= fmax {

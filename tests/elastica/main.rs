@@ -6,6 +6,7 @@ mod common;
 
 mod data;
 mod extremes;
+mod out_of_plane;
 mod physics;
 mod series;
 mod tables;

@@ -5,6 +5,7 @@
 mod common;
 
 mod cascade;
+mod diamonds;
 mod input;
 mod jacobians;
 mod planar;
