@@ -1,0 +1,62 @@
+//! Bugs the fuzz suite found in the upper layers, each with the call that
+//! showed it (fixed in src/, see /work/notes/fuzz10.md).
+
+use hockle::spring::{ElasticaModel, Model, Spring};
+use hockle::{Error, Stiffness, Target};
+
+/// Found by `spring_entries`: the scaffold of a spring of 4 069 355 578
+/// coils searched the fold of every secondary branch j = n − 1, …, 1 (hours,
+/// and n branches of `samples` points each); now refused at once.
+#[test]
+fn scaffold_of_too_many_coils_is_refused() {
+    let s = Stiffness::nikolai(10.0, 0.05).unwrap();
+    for n in [
+        ElasticaModel::MAX_SCAFFOLD_COILS + 1,
+        4_069_355_578,
+        u32::MAX,
+    ] {
+        let spring = Spring::from_degrees(n, 30.0, s).unwrap();
+        let res = ElasticaModel::default().scaffold(&spring, 3.0);
+        assert!(
+            matches!(res, Err(Error::InvalidCount { name: "coils", .. })),
+            "n = {n}: {res:?}"
+        );
+    }
+    // 10⁶ samples on each of 1000 branches: more than MAX_SAMPLES points
+    let spring = Spring::from_degrees(1000, 30.0, s).unwrap();
+    let res = ElasticaModel::new(1_000_000)
+        .unwrap()
+        .scaffold(&spring, 3.0);
+    assert!(matches!(res, Err(Error::InvalidCount { .. })), "{res:?}");
+}
+
+/// Found by `spring_entries`: `ElasticaModel::pull_to(Target::Extension(dz))`
+/// found the υ elastica of extension dz by bisection in k, which stops at
+/// k = 1 − 2⁻⁵³; for dz beyond the extension there it answered "reached"
+/// with a last point far short of dz (Δz = 0.8970 for dz = 1 − 2⁻⁵³ at
+/// n = 1 828 996 208; 0.8987 for dz = 0.9 at n = 50). Now the bisection is
+/// in q = −ln m₁ up to m₁ = e^−690 (the trace's reach): the last point is
+/// on dz, or the target is `UnreachableTarget`.
+#[test]
+fn elastica_extension_target_is_met_or_refused() {
+    let s = Stiffness::nikolai(100.0, 0.05).unwrap();
+    for (n, dz) in [(4, 0.9), (50, 0.9), (50, 0.97), (1, 0.95)] {
+        let spring = Spring::from_degrees(n, 90.0, s).unwrap();
+        let resp = ElasticaModel::default()
+            .pull_to(&spring, Target::Extension(dz))
+            .unwrap();
+        let last = resp.curve().points().last().unwrap().extension;
+        // the trace meets its force limit to 1e-9 relative; Δz varies
+        // with F far more slowly than F there (dΔz/dF · F ≪ 1)
+        assert!(
+            resp.reached_target() && (last - dz).abs() < 1e-8,
+            "n = {n}, dz = {dz}: {last}"
+        );
+    }
+    let spring = Spring::from_degrees(50, 90.0, s).unwrap();
+    let res = ElasticaModel::default().pull_to(&spring, Target::Extension(1.0 - 1e-16));
+    assert!(
+        matches!(res, Err(Error::UnreachableTarget { .. })),
+        "{res:?}"
+    );
+}
