@@ -209,9 +209,9 @@ fn pull(
         .run(())
 }
 
-/// The largest difference between two runs in the plot plane
-/// (Δz, F/((2πn)²B)): over the folds when both located the same kinds in the
-/// same order, else `None`.
+/// The largest difference between the folds of two runs in the plot plane
+/// (Δz, F/((2πn)²B)) when both located the same kinds in the same order,
+/// else `None`.
 fn fold_difference(a: &PullRun, b: &PullRun) -> Option<f64> {
     if a.folds().len() != b.folds().len()
         || a.folds()
@@ -253,9 +253,9 @@ fn termination(t: &Termination) -> String {
 
 fn rod() {
     println!(
-        "| n | θ0 | A/B | ν | 48 intervals: end | points | folds | pop-outs | time | 96: end | folds | time | 48 vs 96 |"
+        "| n | θ0 | A/B | ν | 48 intervals: end | points | folds | pop-outs | time | 96: end | folds | time | 48 vs 96: folds | 48 vs 96: end Δz |"
     );
-    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
     let paper = (4, 89.8, 10.0, 0.05);
     let mut cases = Vec::new();
     for n in [1, 2, 8, 16] {
@@ -281,28 +281,30 @@ fn rod() {
         let (run48, run96) = match (coarse, fine) {
             (Ok(a), Ok(b)) => (a, b),
             (Err(e), _) | (_, Err(e)) => {
-                println!("{head} {e} | | | | | | | | |");
+                println!("{head} {e} | | | | | | | | | |");
                 continue;
             }
         };
         let pop_outs = RodModel::response(run48.clone()).map_or(0, |r| r.pop_outs().len());
-        let diff = match fold_difference(&run48, &run96) {
-            Some(d) if !run48.folds().is_empty() => format!("folds {d:.1e}"),
-            Some(_) if run48.reached_target() && run96.reached_target() => {
-                format!(
-                    "end Δz {:.1e}",
-                    (last_extension(&run48) - last_extension(&run96)).abs()
-                )
-            }
-            Some(_) => "—".into(),
+        let folds = match fold_difference(&run48, &run96) {
+            Some(_) if run48.folds().is_empty() => "—".to_string(),
+            Some(d) => format!("{d:.1e}"),
             None => format!(
                 "fold kinds differ ({} vs {})",
                 run48.folds().len(),
                 run96.folds().len()
             ),
         };
+        let end = if run48.reached_target() && run96.reached_target() {
+            format!(
+                "{:.1e}",
+                (last_extension(&run48) - last_extension(&run96)).abs()
+            )
+        } else {
+            "—".to_string()
+        };
         println!(
-            "{head} {} (Δz = {:.6}) | {} | {} | {pop_outs} | {:.1} s | {} (Δz = {:.6}) | {} | {:.1} s | {diff} |",
+            "{head} {} (Δz = {:.8}) | {} | {} | {pop_outs} | {:.1} s | {} (Δz = {:.8}) | {} | {:.1} s | {folds} | {end} |",
             termination(run48.termination()),
             last_extension(&run48),
             run48.curve().len(),

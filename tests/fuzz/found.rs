@@ -60,3 +60,31 @@ fn elastica_extension_target_is_met_or_refused() {
         "{res:?}"
     );
 }
+
+/// Found by `rod_entries`: a force target f whose physical value
+/// f·(2πn)²B overflows passed `Pull::check` and then failed in `run` with
+/// "stop_at = inf is not allowed", a setting the user never gave. Now
+/// `check` (and so `run`, `start`, `RodModel`) refuses it as
+/// `UnreachableTarget`.
+#[test]
+fn force_target_beyond_the_double_range_is_unreachable() {
+    use hockle::rod::{Pull, Rod};
+    let rod = Rod::new(
+        8,
+        89.8_f64.to_radians(),
+        Stiffness::nikolai(10.0, 0.05).unwrap(),
+    )
+    .unwrap();
+    for f in [f64::MAX, -f64::MAX, 1e306] {
+        let pull = Pull::new(rod, Target::Force(f)).intervals(8).max_steps(5);
+        assert!(
+            matches!(pull.check(), Err(Error::UnreachableTarget { .. })),
+            "f = {f:e}: {:?}",
+            pull.check()
+        );
+        assert!(matches!(pull.run(()), Err(Error::UnreachableTarget { .. })));
+    }
+    // the largest representable one is still a target (not run here)
+    let f = 1e300;
+    assert!(Pull::new(rod, Target::Force(f)).check().is_ok());
+}

@@ -13,7 +13,7 @@ use hockle::{Error, Target};
 
 use crate::curve::response_entries;
 use crate::hostile::{Gen, Report, finite};
-use crate::rod::{helix_angle, scale_ok, stiffness, target, target_ok};
+use crate::rod::{force_in_range, helix_angle, scale_ok, stiffness, target, target_ok};
 
 /// Springs take microseconds, a helix pull tens of microseconds, an
 /// elastica pull a millisecond, a stopped rod pull a few: about 2 s.
@@ -300,6 +300,7 @@ pub fn check_response(r: &mut Report, resp: &Response, exact: bool, what: &dyn F
 /// `RodModel::pull_observed` on a tiny mesh, stopped by the observer after
 /// `ROD_POINTS` points (the model has no step limit of its own).
 fn rod_pull(g: &mut Gen, r: &mut Report, spring: &Spring, t: Target, valid_target: bool) {
+    let valid_target = valid_target && force_in_range(t, spring.force_scale());
     if !g.u64().is_multiple_of(6) {
         // the driver only: validation without solving
         let what = || format!("RodModel: driver({spring}, {t})");
