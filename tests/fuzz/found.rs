@@ -1,5 +1,5 @@
-//! Bugs the fuzz suite found in the upper layers, each with the call that
-//! showed it (fixed in src/, see /work/notes/fuzz10.md).
+//! Bugs the fuzz suite found after its first version (issue 10), each with
+//! the call that showed it (fixed in src/, see /work/notes/fuzz10.md).
 
 use hockle::spring::{ElasticaModel, Model, Spring};
 use hockle::{Error, Stiffness, Target};
@@ -87,4 +87,24 @@ fn force_target_beyond_the_double_range_is_unreachable() {
     // the largest representable one is still a target (not run here)
     let f = 1e300;
     assert!(Pull::new(rod, Target::Force(f)).check().is_ok());
+}
+
+/// Found by the long run (`helix_entries`, 30× budget, at main 3a870ea):
+/// `Helix::curve_to` for a stiffness B whose force scale (2πn)²B overflows
+/// (B = f64::MAX, or n = 2³² − 1 with B = 1e290) failed with
+/// "bending stiffness B is not allowed" from the curve's `ForceScale`,
+/// although `Helix::new` accepted B (the helix's closed forms are scaled);
+/// now `Error::Overflow` naming B, as the helix documents for values beyond
+/// the largest double.
+#[test]
+fn helix_curve_whose_force_scale_overflows_is_overflow() {
+    use hockle::helix::Helix;
+    for (n, b) in [(221, f64::MAX), (u32::MAX, 1e290)] {
+        let h = Helix::new(n, 1.0, Stiffness::new(1.0, b, 1.0).unwrap()).unwrap();
+        let res = h.curve_to(5, 0.9);
+        assert!(
+            matches!(res, Err(Error::Overflow { name: "B", .. })),
+            "n = {n}, B = {b:e}: {res:?}"
+        );
+    }
 }
