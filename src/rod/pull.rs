@@ -294,7 +294,8 @@ impl Pull {
     /// # Errors
     /// [`Error::InvalidCount`] for a mesh or Gauss-point count out of range;
     /// [`Error::InvalidArgument`] for step sizes that are not
-    /// 0 < ds_min ≤ |ds| ≤ ds_max < ∞, a maximum angle outside (0, π], or no
+    /// 0 < ds_min ≤ |ds| ≤ ds_max < ∞, a force scale (2πn)²B whose square
+    /// leaves the double range (B outside about [1e-154, 1e154]/(2πn)²), a maximum angle outside (0, π], or no
     /// steps; [`Error::UnreachableTarget`] for a target the spring cannot
     /// reach (for extensions, judged against cos θ0 when the rod is
     /// helical; for forces, also one whose physical value f·(2πn)²B is
@@ -322,6 +323,16 @@ impl Pull {
             return Err(Error::UnreachableTarget {
                 target: self.target,
                 rest_extension: rest,
+            });
+        }
+        let scale = self.rod.scale().value();
+        let theta = 1.0 / (scale * scale);
+        if !(theta.is_finite() && theta > 0.0) {
+            // the continuation norm weighs forces by 1/((2πn)²B)²
+            return Err(Error::InvalidArgument {
+                name: "bending stiffness B",
+                value: self.rod.stiffness().b(),
+                allowed: "(2πn)²B between about 1e-154 and 1e154: the pull's norm squares it",
             });
         }
         let ds = self.first_step.unwrap_or(self.ds_min);

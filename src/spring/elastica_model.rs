@@ -32,9 +32,10 @@ impl Default for ElasticaModel {
 
 impl ElasticaModel {
     /// The most coils [`scaffold`](Self::scaffold) draws the branches of:
-    /// 1000 (one fold search per secondary branch, n − 1 of them, about
-    /// 25 µs each, plus a trace for each below the target).
-    pub const MAX_SCAFFOLD_COILS: u32 = 1000;
+    /// 221, the largest n whose secondary branch j = 1 the elastica
+    /// locates in double precision (n/j < 222, [`secondary_fold`]); one
+    /// fold search per secondary branch, n − 1 of them.
+    pub const MAX_SCAFFOLD_COILS: u32 = 221;
 
     /// An elastica model sampling each branch at `samples` points.
     ///
@@ -73,7 +74,7 @@ impl ElasticaModel {
             return Err(crate::Error::InvalidCount {
                 name: "coils",
                 value: u64::from(n),
-                allowed: "at most ElasticaModel::MAX_SCAFFOLD_COILS = 1000 coils, and \
+                allowed: "at most ElasticaModel::MAX_SCAFFOLD_COILS = 221 coils (n/j < 222), and \
                           coils × samples at most spring::MAX_SAMPLES = 10⁷ points",
             });
         }

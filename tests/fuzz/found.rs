@@ -6,7 +6,9 @@ use hockle::{Error, Stiffness, Target};
 
 /// Found by `spring_entries`: the scaffold of a spring of 4 069 355 578
 /// coils searched the fold of every secondary branch j = n − 1, …, 1 (hours,
-/// and n branches of `samples` points each); now refused at once.
+/// and n branches of `samples` points each); now refused at once, above 221
+/// coils (the long run then found that n = 1000 failed in the elastica's
+/// fold search, which needs n/j < 222).
 #[test]
 fn scaffold_of_too_many_coils_is_refused() {
     let s = Stiffness::nikolai(10.0, 0.05).unwrap();
@@ -22,8 +24,8 @@ fn scaffold_of_too_many_coils_is_refused() {
             "n = {n}: {res:?}"
         );
     }
-    // 10⁶ samples on each of 1000 branches: more than MAX_SAMPLES points
-    let spring = Spring::from_degrees(1000, 30.0, s).unwrap();
+    // 10⁶ samples on each of 200 branches: more than MAX_SAMPLES points
+    let spring = Spring::from_degrees(200, 30.0, s).unwrap();
     let res = ElasticaModel::new(1_000_000)
         .unwrap()
         .scaffold(&spring, 3.0);
@@ -105,6 +107,31 @@ fn helix_curve_whose_force_scale_overflows_is_overflow() {
         assert!(
             matches!(res, Err(Error::Overflow { name: "B", .. })),
             "n = {n}, B = {b:e}: {res:?}"
+        );
+    }
+}
+
+/// Found by the long run (`rod_entries`): a rod whose force scale
+/// (2πn)²B is beyond 1e154 or below 1e-154 passed `Pull::check` and failed
+/// in `run` with "parameter_weight = 0" or "weight = inf" (the pull's norm
+/// weighs forces by 1/((2πn)²B)²), settings the user never gave. Now
+/// `check` refuses it naming B.
+#[test]
+fn pull_refuses_a_force_scale_its_norm_cannot_square() {
+    use hockle::rod::{Pull, Rod};
+    for b in [1e160, 1e-160] {
+        let rod = Rod::new(4, 1.0, Stiffness::new(1.0, b, 1.0).unwrap()).unwrap();
+        let pull = Pull::new(rod, Target::Force(0.5)).intervals(8).max_steps(5);
+        let res = pull.run(());
+        assert!(
+            matches!(
+                res,
+                Err(Error::InvalidArgument {
+                    name: "bending stiffness B",
+                    ..
+                })
+            ),
+            "B = {b:e}: {res:?}"
         );
     }
 }

@@ -83,6 +83,13 @@ pub fn force_in_range(t: Target, scale: f64) -> bool {
     }
 }
 
+/// Whether the pull's norm can square the force scale: 1/((2πn)²B)² is a
+/// normal double.
+pub fn norm_ok(scale: f64) -> bool {
+    let theta = 1.0 / (scale * scale);
+    theta.is_finite() && theta > 0.0
+}
+
 /// Whether a target is in its documented domain for a rest extension.
 pub fn target_ok(t: Target, rest: f64) -> bool {
     match t {
@@ -181,6 +188,7 @@ fn settings(g: &mut Gen, r: &mut Report, rod: Rod, t: Target, rest: f64) -> Opti
     let valid = rod.theta0() != FRAC_PI_2
         && target_ok(t, rest)
         && force_in_range(t, rod.scale().value())
+        && norm_ok(rod.scale().value())
         && step_ok
         && angle > 0.0
         && angle <= PI
@@ -227,7 +235,12 @@ pub fn check_pull(r: &mut Report, run: &PullRun, max_steps: usize, what: &dyn Fn
         .iter()
         .all(|p| finite(&[p.extension, p.force, p.parameter]) && p.extension.abs() <= 1.0 + 1e-9);
     r.check(!c.is_empty() && pts_ok, || {
-        format!("{}: bad curve {c}", what())
+        let worst = c
+            .points()
+            .iter()
+            .map(|p| p.extension.abs())
+            .fold(0.0, f64::max);
+        format!("{}: bad curve {c}, largest |Δz| = {worst:e}", what())
     });
     r.check(run.loops().len() == c.len(), || {
         format!(
