@@ -13,7 +13,7 @@ use crate::continuation::bratu_start;
 use crate::hostile::{Gen, Report, finite};
 
 /// Constructors and checks take microseconds, a real pull (at most 12
-/// intervals, 5 steps) a few milliseconds; about 600 of the valid pulls
+/// intervals, 5 steps) a few milliseconds; one valid pull in 8 (522)
 /// are run: about 2 s in release.
 pub const CI_CALLS: u64 = 60_000;
 
