@@ -1,8 +1,9 @@
 //! The extremes tables of docs/ACCURACY.md ("extremes" section): what
-//! `special` and `elastica` give at the ends of their domains.
+//! `special`, `elastica` and the 3D rod give at the ends of their domains.
 //!
 //! ```text
-//! cargo run --release --example extremes
+//! cargo run --release --example extremes            # special, elastica
+//! cargo run --release --example extremes -- --rod   # the rod only (minutes)
 //! ```
 //!
 //! special: against the mpmath table `tests/data/special_extremes.csv`
@@ -11,11 +12,19 @@
 //! elastica: the residual of the end condition κ(s_i) = 2πn (eq6, evaluated
 //! with `special::jacobi`, independent of the root solve), the centreline's
 //! end against the closed-form extension, and traces to large forces.
+//! rod: the paper's spring with one parameter moved at a time, pulled to
+//! F/((2πn)²B) = 100 on the default mesh (48 intervals) and on 96; the
+//! difference of the fold positions (or of the final extension) between the
+//! two meshes says where the default mesh is not accurate enough.
 
 use core::f64::consts::PI;
 
+use hockle::continuation::Termination;
 use hockle::elastica::{Branch, Elastica, Trace, secondary_fold};
+use hockle::rod::{Pull, PullRun, Rod};
 use hockle::special::{Modulus, ellip_e, ellip_e_inc, ellip_f, ellip_k, jacobi};
+use hockle::spring::RodModel;
+use hockle::{Stiffness, Target};
 
 const TABLE: &str = include_str!("../tests/data/special_extremes.csv");
 
@@ -179,7 +188,142 @@ fn elastica() {
     }
 }
 
+/// The pull target of the rod table: F/((2πn)²B) = 100.
+const ROD_TARGET: f64 = 100.0;
+
+/// One pull of the rod table on `intervals` mesh intervals.
+fn pull(
+    n: u32,
+    theta0_deg: f64,
+    a_over_b: f64,
+    nu: f64,
+    intervals: usize,
+) -> hockle::Result<PullRun> {
+    let rod = Rod::new(
+        n,
+        theta0_deg.to_radians(),
+        Stiffness::nikolai(a_over_b, nu)?,
+    )?;
+    Pull::new(rod, Target::Force(ROD_TARGET))
+        .intervals(intervals)
+        .run(())
+}
+
+/// The largest difference between the folds of two runs in the plot plane
+/// (Δz, F/((2πn)²B)) when both located the same kinds in the same order,
+/// else `None`.
+fn fold_difference(a: &PullRun, b: &PullRun) -> Option<f64> {
+    if a.folds().len() != b.folds().len()
+        || a.folds()
+            .iter()
+            .zip(b.folds())
+            .any(|(x, y)| x.kind != y.kind)
+    {
+        return None;
+    }
+    let (sa, sb) = (a.curve().scale(), b.curve().scale());
+    Some(
+        a.folds()
+            .iter()
+            .zip(b.folds())
+            .map(|(x, y)| {
+                let dz = (x.point.extension - y.point.extension).abs();
+                let df = (x.point.force_scaled(sa) - y.point.force_scaled(sb)).abs();
+                dz.max(df)
+            })
+            .fold(0.0, f64::max),
+    )
+}
+
+fn last_extension(run: &PullRun) -> f64 {
+    run.curve()
+        .points()
+        .last()
+        .map_or(f64::NAN, |p| p.extension)
+}
+
+fn termination(t: &Termination) -> String {
+    match t {
+        Termination::ParameterValue(_) => "reached".into(),
+        Termination::MaxSteps(n) => format!("step limit ({n})"),
+        Termination::Failed { ds, error } => format!("Failed at ds = {ds:.1e}: {error}"),
+        other => other.to_string(),
+    }
+}
+
+fn rod() {
+    println!(
+        "| n | θ0 | A/B | ν | 48 intervals: end | points | folds | pop-outs | time | 96: end | folds | time | 48 vs 96: folds | 48 vs 96: end Δz |"
+    );
+    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    let paper = (4, 89.8, 10.0, 0.05);
+    let mut cases = Vec::new();
+    for n in [1, 2, 8, 16] {
+        cases.push((n, paper.1, paper.2, paper.3));
+    }
+    for th in [30.0, 89.99, 90.0] {
+        cases.push((paper.0, th, paper.2, paper.3));
+    }
+    for ab in [100.0, 0.01] {
+        cases.push((paper.0, paper.1, ab, paper.3));
+    }
+    for nu in [-0.5, 0.0, 0.49] {
+        cases.push((paper.0, paper.1, paper.2, nu));
+    }
+    for (n, th, ab, nu) in cases {
+        let head = format!("| {n} | {th}° | {ab} | {nu} |");
+        // the two meshes on two threads
+        let (coarse, fine) = std::thread::scope(|sc| {
+            let fine = sc.spawn(|| pull(n, th, ab, nu, 96));
+            let coarse = pull(n, th, ab, nu, 48);
+            (coarse, fine.join().expect("the 96-interval pull panicked"))
+        });
+        let (run48, run96) = match (coarse, fine) {
+            (Ok(a), Ok(b)) => (a, b),
+            (Err(e), _) | (_, Err(e)) => {
+                println!("{head} {e} | | | | | | | | | |");
+                continue;
+            }
+        };
+        let pop_outs = RodModel::response(run48.clone()).map_or(0, |r| r.pop_outs().len());
+        let folds = match fold_difference(&run48, &run96) {
+            Some(_) if run48.folds().is_empty() => "—".to_string(),
+            Some(d) => format!("{d:.1e}"),
+            None => format!(
+                "fold kinds differ ({} vs {})",
+                run48.folds().len(),
+                run96.folds().len()
+            ),
+        };
+        let end = if run48.reached_target() && run96.reached_target() {
+            format!(
+                "{:.1e}",
+                (last_extension(&run48) - last_extension(&run96)).abs()
+            )
+        } else {
+            "—".to_string()
+        };
+        println!(
+            "{head} {} (Δz = {:.8}) | {} | {} | {pop_outs} | {:.1} s | {} (Δz = {:.8}) | {} | {:.1} s | {folds} | {end} |",
+            termination(run48.termination()),
+            last_extension(&run48),
+            run48.curve().len(),
+            run48.folds().len(),
+            run48.elapsed().as_secs_f64(),
+            termination(run96.termination()),
+            last_extension(&run96),
+            run96.folds().len(),
+            run96.elapsed().as_secs_f64(),
+        );
+    }
+}
+
 fn main() {
+    if std::env::args().any(|a| a == "--rod") {
+        println!("### rod\n");
+        rod();
+        return;
+    }
     println!("### special\n");
     special();
     println!("\n### elastica\n");

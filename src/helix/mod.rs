@@ -364,7 +364,8 @@ impl Helix {
     ///
     /// # Errors
     /// [`Error::InvalidCount`] if `samples` < 2 or > [`MAX_POINTS`](crate::error::MAX_POINTS); [`Error::InvalidArgument`] if
-    /// `max_extension` is not in (cos θ0, 1).
+    /// `max_extension` is not in (cos θ0, 1); [`Error::Overflow`] if the
+    /// curve's force scale (2πn)²B or a force is beyond the largest double.
     pub fn curve_to(&self, samples: usize, max_extension: f64) -> Result<ForceExtension> {
         check_points("samples", samples)?;
         let z0 = self.theta0.cos();
@@ -375,10 +376,18 @@ impl Helix {
                 allowed: "an extension between cos θ0 and 1 (exclusive)",
             });
         }
+        // a curve carries its force scale (2πn)²B, which can overflow where
+        // the helix's own (scaled) closed forms do not
+        let scale =
+            ForceScale::new(self.coils, self.stiffness.b()).map_err(|_| Error::Overflow {
+                quantity: "force scale (2πn)²B of the curve",
+                name: "B",
+                value: self.stiffness.b(),
+            })?;
         let mut curve = ForceExtension::new(
             format!("helix n={} θ0={:.4}°", self.coils, self.theta0.to_degrees()),
             "theta",
-            ForceScale::new(self.coils, self.stiffness.b())?,
+            scale,
         );
         for i in 0..samples {
             let theta = if i == 0 {

@@ -295,10 +295,12 @@ impl Pull {
     /// # Errors
     /// [`Error::InvalidCount`] for a mesh or Gauss-point count out of range;
     /// [`Error::InvalidArgument`] for step sizes that are not
-    /// 0 < ds_min ≤ |ds| ≤ ds_max < ∞, a maximum angle outside (0, π], or no
+    /// 0 < ds_min ≤ |ds| ≤ ds_max < ∞, a force scale (2πn)²B whose square
+    /// leaves the double range (B outside about [1e-154, 1e154]/(2πn)²), a maximum angle outside (0, π], or no
     /// steps; [`Error::UnreachableTarget`] for a target the spring cannot
     /// reach (for extensions, judged against cos θ0 when the rod is
-    /// helical); [`Error::OutsideModel`] at θ0 = 90°, where the unstressed
+    /// helical; for forces, also one whose physical value f·(2πn)²B is
+    /// beyond the largest double); [`Error::OutsideModel`] at θ0 = 90°, where the unstressed
     /// ring closes on itself and its end forces are undetermined.
     pub fn check(&self) -> Result<Collocation> {
         if self.rod.theta0() == core::f64::consts::FRAC_PI_2 {
@@ -309,10 +311,30 @@ impl Pull {
                              a planar solution in θ0 with `continuation`",
             });
         }
-        if self.rod.is_helical() {
-            self.target.validate(self.rod.theta0().cos())?;
+        let rest = if self.rod.is_helical() {
+            self.rod.theta0().cos()
         } else {
-            self.target.validate(f64::NAN)?;
+            f64::NAN
+        };
+        self.target.validate(rest)?;
+        if let Target::Force(f) = self.target
+            && !(f * self.rod.scale().value()).is_finite()
+        {
+            // the physical force F = f·(2πn)²B is beyond the largest double
+            return Err(Error::UnreachableTarget {
+                target: self.target,
+                rest_extension: rest,
+            });
+        }
+        let scale = self.rod.scale().value();
+        let theta = 1.0 / (scale * scale);
+        if !(theta.is_finite() && theta > 0.0) {
+            // the continuation norm weighs forces by 1/((2πn)²B)²
+            return Err(Error::InvalidArgument {
+                name: "bending stiffness B",
+                value: self.rod.stiffness().b(),
+                allowed: "(2πn)²B between about 1e-154 and 1e154: the pull's norm squares it",
+            });
         }
         let ds = self.first_step.unwrap_or(self.ds_min);
         if !(self.ds_min > 0.0

@@ -5,6 +5,7 @@ use crate::curve::{ForceExtension, ForcePoint, ForceScale};
 use crate::elastica::{Branch, Elastica, Trace, secondary_fold};
 use crate::error::Result;
 use crate::load::Target;
+use crate::special::Modulus;
 
 use super::{Model, Response, Spring, check_samples, check_simple_target};
 
@@ -30,6 +31,12 @@ impl Default for ElasticaModel {
 }
 
 impl ElasticaModel {
+    /// The most coils [`scaffold`](Self::scaffold) draws the branches of:
+    /// 221, the largest n whose secondary branch j = 1 the elastica
+    /// locates in double precision (n/j < 222, [`secondary_fold`]); one
+    /// fold search per secondary branch, n − 1 of them.
+    pub const MAX_SCAFFOLD_COILS: u32 = 221;
+
     /// An elastica model sampling each branch at `samples` points.
     ///
     /// # Errors
@@ -49,7 +56,10 @@ impl ElasticaModel {
     ///
     /// # Errors
     /// [`Error::UnreachableTarget`](crate::Error::UnreachableTarget) unless
-    /// the force is finite and positive.
+    /// the force is finite and positive;
+    /// [`Error::InvalidCount`](crate::Error::InvalidCount) for more than
+    /// [`ElasticaModel::MAX_SCAFFOLD_COILS`] coils, or more than
+    /// [`MAX_POINTS`](crate::error::MAX_POINTS) points in all (n branches of `samples` points).
     pub fn scaffold(&self, spring: &Spring, max_force_scaled: f64) -> Result<Vec<ForceExtension>> {
         let target = max_force_scaled;
         if !(target.is_finite() && target > 0.0) {
@@ -59,6 +69,15 @@ impl ElasticaModel {
             });
         }
         let n = spring.coils();
+        let points = (n as usize).saturating_mul(self.samples);
+        if n > Self::MAX_SCAFFOLD_COILS || points > crate::error::MAX_POINTS {
+            return Err(crate::Error::InvalidCount {
+                name: "coils",
+                value: u64::from(n),
+                allowed: "at most ElasticaModel::MAX_SCAFFOLD_COILS = 221 coils (n/j < 222), and \
+                          coils × samples at most error::MAX_POINTS = 2^22 points",
+            });
+        }
         let trace = Trace::new()
             .points(self.samples)
             .max_force_scaled(target)
@@ -87,7 +106,9 @@ impl Model for ElasticaModel {
         let n = spring.coils();
         let force_scaled = match target {
             Target::Force(f) => f,
-            Target::Extension(dz) => upsilon_at_extension(n, dz)?.force_scaled(),
+            Target::Extension(dz) => {
+                upsilon_at_extension(n, dz, spring.helix_angle().cos())?.force_scaled()
+            }
         };
         let curve = Trace::new()
             .points(self.samples)
@@ -110,23 +131,41 @@ impl Model for ElasticaModel {
     }
 }
 
+/// How far [`upsilon_at_extension`] follows the υ-branch: to m₁ = e^−690,
+/// as [`Trace`] does.
+const Q_REACH: f64 = 690.0;
+
 /// The primary υ elastica of n coils with extension `dz` ∈ (0, 1): Δz grows
-/// from 0 (the ring, k = 0) to 1 (k → 1) along the branch; bisection in k.
-fn upsilon_at_extension(n: u32, dz: f64) -> Result<Elastica> {
-    let extension = |k: f64| -> Result<f64> { Ok(Elastica::symmetric(n, k)?.upsilon.extension()) };
-    let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
-    for _ in 0..200 {
+/// from 0 (the ring, k = 0) towards 1 (k → 1) along the branch; bisection
+/// in q = −ln m₁ ∈ [0, 690] (in k it resolved m₁ near k = 1 only to
+/// ~1e-16/m₁ and stopped at k = 1 − 2⁻⁵³, up to 0.1 short of dz).
+///
+/// # Errors
+/// [`crate::Error::UnreachableTarget`] if the branch stays below `dz` up to
+/// m₁ = e^−690 (where its force is beyond any the trace reaches).
+fn upsilon_at_extension(n: u32, dz: f64, rest_extension: f64) -> Result<Elastica> {
+    let at = |q: f64| -> Result<Elastica> {
+        Elastica::upsilon(n, Modulus::from_complement((-q).exp())?)
+    };
+    if at(Q_REACH)?.extension() < dz {
+        return Err(crate::Error::UnreachableTarget {
+            target: Target::Extension(dz),
+            rest_extension,
+        });
+    }
+    let (mut lo, mut hi) = (0.0_f64, Q_REACH);
+    loop {
         let mid = 0.5 * (lo + hi);
         if mid <= lo || mid >= hi {
             break;
         }
-        if extension(mid)? < dz {
+        if at(mid)?.extension() < dz {
             lo = mid;
         } else {
             hi = mid;
         }
     }
-    Ok(Elastica::symmetric(n, lo)?.upsilon)
+    at(hi)
 }
 
 /// The elastica is solved with B = 1: forces scale with the spring's B

@@ -1,0 +1,366 @@
+//! `spring`: `Spring::new`/`from_degrees`/`with_intrinsic_strains`, the
+//! models' constructors, and every `Model::pull_to` with hostile targets
+//! (the rod with a tiny mesh, stopped by an observer after a few points).
+
+use core::f64::consts::FRAC_PI_2;
+use std::cell::Cell;
+use std::ops::ControlFlow;
+
+use hockle::continuation::{Point, Termination};
+use hockle::error::MAX_POINTS as MAX_SAMPLES;
+use hockle::nalgebra::Vector3;
+use hockle::spring::{ElasticaModel, HelixModel, Model, Response, RodModel, Spring};
+use hockle::{Error, Target};
+
+use crate::curve::response_entries;
+use crate::hostile::{Gen, Report, finite};
+use crate::rod::{force_in_range, helix_angle, norm_ok, scale_ok, stiffness, target, target_ok};
+
+/// Springs take microseconds, a helix pull tens of microseconds, an
+/// elastica pull a millisecond, a stopped rod pull a few: about 2 s.
+pub const CI_CALLS: u64 = 40_000;
+
+/// The rod pull is stopped after this many points.
+const ROD_POINTS: usize = 4;
+
+/// Most samples a model draws its curve with in the fuzz loop.
+const SAMPLES: usize = 50;
+
+pub fn fuzz(g: &mut Gen, r: &mut Report, calls: u64) {
+    while r.calls < calls {
+        let Some(s) = stiffness(g, r) else { continue };
+        let n = g.u32(8);
+        let degrees = g.u64().is_multiple_of(4);
+        let th = if degrees {
+            g.arg(0.0, 90.0)
+        } else {
+            helix_angle(g)
+        };
+        let what = || {
+            format!(
+                "Spring::new({n}, {th:e}{}, {s})",
+                if degrees { "°" } else { "" }
+            )
+        };
+        let Some(res) = r.call(what, || {
+            if degrees {
+                Spring::from_degrees(n, th, s)
+            } else {
+                Spring::new(n, th, s)
+            }
+        }) else {
+            continue;
+        };
+        let rad = if degrees { th.to_radians() } else { th };
+        let valid = scale_ok(n, s.b()) && rad > 0.0 && rad <= FRAC_PI_2;
+        let mut spring = match res {
+            Ok(sp) => {
+                r.check(valid, || format!("{} accepted", what()));
+                sp
+            }
+            Err(e) => {
+                r.check(!valid, || format!("{}: {e}", what()));
+                continue;
+            }
+        };
+        if g.u64().is_multiple_of(8) {
+            let u = Vector3::new(g.arg(-10.0, 10.0), g.any_f64(), g.arg(0.0, 30.0));
+            let what = || format!("{spring}: with_intrinsic_strains({u:?})");
+            let Some(res) = r.call(what, || spring.with_intrinsic_strains(u)) else {
+                continue;
+            };
+            let ok = u.iter().all(|v| v.is_finite());
+            match res {
+                Ok(sp) => {
+                    r.check(ok, || format!("{} accepted", what()));
+                    spring = sp;
+                }
+                Err(e) => r.check(!ok, || format!("{}: {e}", what())),
+            }
+        }
+        r.check(
+            spring.force_scale().is_finite() && spring.force_scale() > 0.0,
+            || format!("{spring}: force scale {}", spring.force_scale()),
+        );
+        models(g, r, &spring);
+    }
+}
+
+/// The errors a documented-valid pull may give: the model cannot represent
+/// this spring or target (a push, custom strains), the elastica branch
+/// does not reach the force, the closed form overflows, the solver failed.
+fn model_refusal(e: &Error) -> bool {
+    matches!(
+        e,
+        Error::OutsideModel { .. }
+            | Error::ForceOutOfReach { .. }
+            | Error::Overflow { .. }
+            | Error::FoldNotFound { .. }
+            | Error::NonFinite { .. }
+            | Error::SingularJacobian { .. }
+            | Error::NewtonDiverged { .. }
+            | Error::NewtonNotConverged { .. }
+    )
+}
+
+/// Findings of this suite in the models, not fixed here (they are not
+/// input checks; /work/notes/fuzz10.md reports them to the lead), each
+/// recognised as narrowly as the failure allows so that anything else
+/// still fails:
+///
+/// - `helix_theta`: `HelixModel::pull_to` on a spring with θ0 < 1e-7 rad
+///   (cos θ0 rounds to 1) samples θ = acos(1) = 0 and fails with
+///   `InvalidArgument { name: "theta" }`, a name the user never gave.
+fn known_refusal(model: &str, spring: &Spring, e: &Error) -> bool {
+    model == "helix"
+        && spring.helix_angle() < 1e-7
+        && matches!(e, Error::InvalidArgument { name: "theta", .. })
+}
+
+/// Findings (continued): a model that says it reached its target with a
+/// last point not on it.
+///
+/// - `helix_subnormal`: `HelixModel::pull_to(Target::Force(f))` for forces
+///   so large that the helix angle at f is subnormal (f ≳ 1e300): the
+///   bisection in θ has fewer than 53 bits there, and the last force is off.
+///
+/// - `subnormal_force`: a spring whose forces are subnormal (B ≲ 1e-290):
+///   the last force has fewer than 53 bits and F/((2πn)²B) is off.
+///
+/// (The elastica model's extension targets were another, fixed: see
+/// `found::elastica_extension_target_is_met_or_refused`.)
+fn known_miss(model: &str, resp: &Response) -> bool {
+    let last = resp.curve().points().last();
+    let subnormal_force = last.is_some_and(|p| p.force.abs() < 1e-290);
+    subnormal_force
+        || (model == "helix"
+            && matches!(resp.target(), Target::Force(_))
+            && last.is_some_and(|p| p.parameter.abs() < f64::MIN_POSITIVE))
+}
+
+/// The models' constructors with hostile counts and `pull_to` with hostile
+/// targets.
+fn models(g: &mut Gen, r: &mut Report, spring: &Spring) {
+    let samples = g.count(SAMPLES as u64) as usize;
+    let which = g.u64() % 8;
+    let rest = if spring.is_helical() {
+        spring.helix_angle().cos()
+    } else {
+        f64::NAN
+    };
+    let t = target(g, rest);
+    let valid_target = target_ok(t, rest);
+    let model: Box<dyn Model> = match which {
+        0..=3 => {
+            let what = || format!("HelixModel::new({samples})");
+            let Some(res) = r.call(what, || HelixModel::new(samples)) else {
+                return;
+            };
+            let ok = (2..=MAX_SAMPLES).contains(&samples);
+            r.check(ok == res.is_ok(), || format!("{}: {res:?}", what()));
+            if !ok {
+                return;
+            }
+            Box::new(HelixModel::new(samples.min(SAMPLES)).expect("valid"))
+        }
+        4..=6 => {
+            let what = || format!("ElasticaModel::new({samples})");
+            let Some(res) = r.call(what, || ElasticaModel::new(samples)) else {
+                return;
+            };
+            let ok = (2..=MAX_SAMPLES).contains(&samples);
+            r.check(ok == res.is_ok(), || format!("{}: {res:?}", what()));
+            if !ok {
+                return;
+            }
+            // the elastica's cost grows with the coils (secondary folds)
+            if spring.coils() > 50 && !g.u64().is_multiple_of(4) {
+                return;
+            }
+            let m = ElasticaModel::new(samples.min(SAMPLES)).expect("valid");
+            if g.u64().is_multiple_of(4) {
+                scaffold(r, &m, spring, t.value());
+            }
+            Box::new(m)
+        }
+        _ => {
+            rod_pull(g, r, spring, t, valid_target);
+            return;
+        }
+    };
+    let what = || format!("{} model: pull_to({spring}, {t})", model.name());
+    let Some(res) = r.call(what, || model.pull_to(spring, t)) else {
+        return;
+    };
+    match res {
+        Ok(resp) => {
+            r.check(valid_target, || format!("{} accepted", what()));
+            let known = known_miss(model.name(), &resp);
+            check_response(r, &resp, !known, &what);
+            response_entries(g, r, &resp);
+        }
+        Err(e) => r.check(
+            match e {
+                // an extension beyond the υ-branch's reach at m₁ = e^−690
+                Error::UnreachableTarget {
+                    target: Target::Extension(_),
+                    ..
+                } if model.name() == "elastica" => true,
+                Error::UnreachableTarget { .. } => !valid_target,
+                // the elastica trace refuses a subnormal force limit
+                // (elastica docs: not met to 1e-9 in double precision)
+                Error::InvalidArgument {
+                    name: "max_force_scaled",
+                    value,
+                    ..
+                } => model.name() == "elastica" && value.abs() < f64::MIN_POSITIVE,
+                ref e => {
+                    model_refusal(e) || !valid_target || known_refusal(model.name(), spring, e)
+                }
+            },
+            || format!("{}: {e}", what()),
+        ),
+    }
+}
+
+/// `ElasticaModel::scaffold` at a hostile force: Ok only for a finite,
+/// positive one, every branch finite.
+fn scaffold(r: &mut Report, m: &ElasticaModel, spring: &Spring, force: f64) {
+    let what = || format!("{m:?}: scaffold({spring}, {force:e})");
+    let Some(res) = r.call(what, || m.scaffold(spring, force)) else {
+        return;
+    };
+    let coils_ok = spring.coils() <= ElasticaModel::MAX_SCAFFOLD_COILS;
+    let ok = force.is_finite() && force > 0.0;
+    match res {
+        Ok(branches) => r.check(
+            ok && coils_ok
+                && branches.iter().all(|b| {
+                    b.points()
+                        .iter()
+                        .all(|p| finite(&[p.extension, p.force, p.parameter]))
+                }),
+            || format!("{}: bad Ok", what()),
+        ),
+        Err(e) => r.check(
+            !ok || model_refusal(&e)
+                || (force.abs() < f64::MIN_POSITIVE
+                    && matches!(
+                        e,
+                        Error::InvalidArgument {
+                            name: "max_force_scaled",
+                            ..
+                        }
+                    ))
+                // a secondary branch needs 3 points (both ends and the
+                // fold); `ElasticaModel::new(2)` is valid for pulls
+                || (matches!(e, Error::InvalidCount { name: "points", value: 2, .. }))
+                || (!coils_ok && matches!(e, Error::InvalidCount { name: "coils", .. })),
+            || format!("{}: {e}", what()),
+        ),
+    }
+}
+
+/// Every value of a response is finite, its loop counts fit its curve,
+/// and a pull that stopped early says why.
+/// With `exact` the pull must have reached its target, and its last point
+/// must be on it.
+pub fn check_response(r: &mut Report, resp: &Response, exact: bool, what: &dyn Fn() -> String) {
+    let c = resp.curve();
+    r.check(
+        c.points()
+            .iter()
+            .all(|p| finite(&[p.extension, p.force, p.parameter])),
+        || format!("{}: non-finite curve point", what()),
+    );
+    r.check(resp.loops().len() == c.len(), || {
+        format!("{}: loop counts do not fit the curve", what())
+    });
+    r.check(!exact || resp.reached_target(), || {
+        format!(
+            "{}: did not reach {}: {}",
+            what(),
+            resp.target(),
+            resp.termination()
+        )
+    });
+    if exact {
+        let end = c.points().last();
+        let at = match resp.target() {
+            Target::Force(f) => end.is_some_and(|p| {
+                let got = p.force_scaled(c.scale());
+                (got - f).abs() <= 1e-8 * f.abs().max(1.0)
+            }),
+            Target::Extension(dz) => end.is_some_and(|p| (p.extension - dz).abs() <= 1e-8),
+        };
+        r.check(at, || {
+            let scaled = end.map(|p| p.force_scaled(c.scale()));
+            format!(
+                "{}: reached, but the last point {end:?} (F/((2πn)²B) = {scaled:?}) is not {}",
+                what(),
+                resp.target()
+            )
+        });
+    }
+}
+
+/// `RodModel::pull_observed` on a tiny mesh, stopped by the observer after
+/// `ROD_POINTS` points (the model has no step limit of its own).
+fn rod_pull(g: &mut Gen, r: &mut Report, spring: &Spring, t: Target, valid_target: bool) {
+    let valid_target =
+        valid_target && force_in_range(t, spring.force_scale()) && norm_ok(spring.force_scale());
+    if !g.u64().is_multiple_of(6) {
+        // the driver only: validation without solving
+        let what = || format!("RodModel: driver({spring}, {t})");
+        if let Some(res) = r.call(what, || RodModel::default().intervals(8).driver(spring, t)) {
+            let ok = valid_target && spring.helix_angle() != FRAC_PI_2;
+            r.check(ok == res.is_ok(), || format!("{}: {res:?}", what()));
+        }
+        return;
+    }
+    let model = RodModel::default()
+        .intervals(4 + (g.u64() % 5) as usize)
+        .points(2 + (g.u64() % 3) as usize);
+    let seen = Cell::new(0);
+    let observer = |_p: &Point| {
+        seen.set(seen.get() + 1);
+        if seen.get() >= ROD_POINTS {
+            ControlFlow::Break(())
+        } else {
+            ControlFlow::Continue(())
+        }
+    };
+    let what = || format!("{model:?}: pull_observed({spring}, {t})");
+    let Some(res) = r.call(what, || model.pull_observed(spring, t, observer)) else {
+        return;
+    };
+    match res {
+        Ok(resp) => {
+            r.check(valid_target && spring.helix_angle() != FRAC_PI_2, || {
+                format!("{} accepted", what())
+            });
+            check_response(r, &resp, false, &what);
+            let ok = match resp.termination() {
+                Termination::Stopped => seen.get() >= ROD_POINTS,
+                Termination::ParameterValue(_) => true,
+                Termination::Failed { error, .. } => {
+                    model_refusal(error) || matches!(error, Error::StepAngleTooLarge { .. })
+                }
+                _ => false,
+            };
+            r.check(ok && !resp.curve().is_empty(), || {
+                format!(
+                    "{}: {:?} with {} points",
+                    what(),
+                    resp.termination(),
+                    resp.curve().len()
+                )
+            });
+            response_entries(g, r, &resp);
+        }
+        Err(e) => r.check(
+            !valid_target || model_refusal(&e) || spring.helix_angle() == FRAC_PI_2,
+            || format!("{}: {e}", what()),
+        ),
+    }
+}
