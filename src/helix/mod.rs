@@ -174,12 +174,11 @@ impl Helix {
         }
     }
 
-    /// F/ρ_f² with F = −(2πn)² min(B, C) p̃ sin(θ − θ0) / (sin θ q̃²),
-    /// p̃ = P/max(B, C), q̃ = Q/max(B, C) (the module docs' F): ρ_f = 2πn
-    /// gives F/(2πn)², ρ_f = 1 gives F.
-    fn scaled_force(&self, theta: f64, rho_f: f64) -> f64 {
+    /// F = −(2πn)² min(B, C) p̃ sin(θ − θ0) / (sin θ q̃²), p̃ = P/max(B, C),
+    /// q̃ = Q/max(B, C) (the module docs' F), factors kept apart.
+    fn scaled_force(&self, theta: f64) -> f64 {
         let pq = self.scaled_p_q(theta);
-        let r0 = self.rho0() / rho_f;
+        let r0 = self.rho0();
         -scaled::ratio(
             &[pq.small, pq.p, (theta - self.theta0).sin(), r0, r0],
             &[theta.sin(), pq.q, pq.q],
@@ -225,7 +224,7 @@ impl Helix {
     /// ```
     pub fn force(&self, theta: f64) -> Result<f64> {
         Self::check(theta)?;
-        Self::finite(self.scaled_force(theta, 1.0), "force", theta)
+        Self::finite(self.scaled_force(theta), "force", theta)
     }
 
     /// [`Self::force`] divided by (2πn)²B, the scale of the paper's plots
