@@ -25,21 +25,8 @@ impl Collocation {
             let nn = sol.mesh.intervals();
             // Equidistribute φ = ‖y^(m+1)‖^(1/(m+1)); the estimate on an
             // equidistributed mesh is C_m (I/N)^(m+1).
-            let d = sol.derivative_m1();
+            let phi = density(&sol);
             let m1 = (tab.m + 1) as f64;
-            let dmax = d.iter().fold(0.0_f64, |a, v| a.max(*v));
-            let mut phi: Vec<f64> = d
-                .iter()
-                .map(|v| v.max(1e-6 * dmax).max(1e-300).powf(1.0 / m1))
-                .collect();
-            if phi.len() > 2 {
-                let raw = phi.clone();
-                for j in 0..raw.len() {
-                    let a = raw[j.saturating_sub(1)];
-                    let c = raw[(j + 1).min(raw.len() - 1)];
-                    phi[j] = 0.25 * (a + 2.0 * raw[j] + c);
-                }
-            }
             let integral: f64 = phi
                 .iter()
                 .enumerate()
@@ -95,6 +82,28 @@ impl Collocation {
             intervals: sol.mesh.intervals() as u64,
         })
     }
+}
+
+/// The mesh density φ_j = ‖y^(m+1)‖^(1/(m+1)) on each interval of `sol`
+/// (floored at 1e-6 of its maximum and smoothed over neighbours), whose
+/// equidistribution balances the local error estimate.
+pub(crate) fn density(sol: &Solution) -> Vec<f64> {
+    let d = sol.derivative_m1();
+    let m1 = (sol.tab.m + 1) as f64;
+    let dmax = d.iter().fold(0.0_f64, |a, v| a.max(*v));
+    let mut phi: Vec<f64> = d
+        .iter()
+        .map(|v| v.max(1e-6 * dmax).max(1e-300).powf(1.0 / m1))
+        .collect();
+    if phi.len() > 2 {
+        let raw = phi.clone();
+        for j in 0..raw.len() {
+            let a = raw[j.saturating_sub(1)];
+            let c = raw[(j + 1).min(raw.len() - 1)];
+            phi[j] = 0.25 * (a + 2.0 * raw[j] + c);
+        }
+    }
+    phi
 }
 
 /// A mesh of `n` intervals equidistributing the piecewise-constant density

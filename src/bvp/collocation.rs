@@ -169,6 +169,10 @@ impl Collocation {
         self
     }
 
+    pub(crate) fn interval_limit(&self) -> usize {
+        self.max_intervals
+    }
+
     pub(crate) fn free(&self) -> &[usize] {
         &self.free
     }

@@ -104,3 +104,11 @@ pub(crate) fn state_from_guess<G: InitialGuess + ?Sized>(
         p: p.to_vec(),
     }
 }
+
+/// The unknowns `x` on `from` carried onto `to` through the collocation
+/// polynomial (the re-interpolation of a remeshed continuation: of its
+/// point and of its tangent alike).
+pub(crate) fn state_on_mesh(x: &State, from: &Mesh, tab: &Tableau, n: usize, to: &Mesh) -> State {
+    let interpolant = Solution::interpolant(x, from, tab, n);
+    state_from_guess(&interpolant, to, tab, n, &x.p)
+}

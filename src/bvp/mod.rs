@@ -71,4 +71,6 @@ pub use problem::Problem;
 pub use solution::{NewtonStats, Solution};
 pub use system::LinearSolver;
 
+pub(crate) use adapt::{density, equidistribute};
+pub(crate) use guess::state_on_mesh;
 pub(crate) use newton::{NewtonOptions, finish, newton, scaled_norm};

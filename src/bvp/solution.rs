@@ -5,6 +5,7 @@ use std::fmt;
 use nalgebra::{DMatrix, DVector};
 
 use super::mesh::Mesh;
+use super::system::State;
 use super::tableau::Tableau;
 
 /// What Newton's method did.
@@ -195,6 +196,22 @@ impl Solution {
     #[must_use]
     pub fn newton(&self) -> NewtonStats {
         self.newton
+    }
+
+    /// The collocation polynomial of the unknowns `x` on `mesh`, as a
+    /// solution (for evaluation and remeshing; no residual or estimate).
+    pub(crate) fn interpolant(x: &State, mesh: &Mesh, tab: &Tableau, n: usize) -> Solution {
+        Solution {
+            mesh: mesh.clone(),
+            tab: tab.clone(),
+            n,
+            y: x.y.clone(),
+            k: x.k.clone(),
+            p: x.p.clone(),
+            residual_norm: f64::NAN,
+            error_estimate: f64::NAN,
+            newton: NewtonStats::default(),
+        }
     }
 
     /// ‖y^(m+1)‖∞ estimated on each interval (piecewise-constant u^(m)

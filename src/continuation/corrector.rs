@@ -2,10 +2,51 @@
 //! the determinant sign.
 
 use super::Steps;
-use crate::bvp::system::State;
+use super::norm::IntegralNorm;
+use crate::bvp::system::{State, System};
 use crate::bvp::{Problem, newton, scaled_norm};
 use crate::error::Result;
 use crate::linalg::Det;
+
+/// Sets the border row of `sys` to the hyperplane ⟨· − x, t⟩ = ds of the
+/// integral norm `norm` (on the system's mesh); `xcol`, `tcol` are work
+/// buffers for the collocation values.
+pub(super) fn set_hyperplane<P: Problem + ?Sized>(
+    sys: &mut System<'_, P>,
+    norm: &IntegralNorm,
+    (x, t): (&State, &State),
+    ds: f64,
+    (xcol, tcol): (&mut [f64], &mut [f64]),
+) {
+    sys.collocation_values(t, tcol);
+    sys.collocation_values(x, xcol);
+    let border = &mut sys.border;
+    norm.row(
+        (tcol, &t.p),
+        &sys.free,
+        &mut border.coef_y,
+        &mut border.coef_q,
+    );
+    let mut target = ds;
+    for (c, v) in border.coef_y.iter().zip(xcol.iter()) {
+        target += c * v;
+    }
+    for (c, &q) in border.coef_q.iter().zip(&sys.free) {
+        target += c * x.p[q];
+    }
+    border.target[0] = target;
+}
+
+/// Solves J τ = e_border with the current factorisation of `sys` (the
+/// tangent of a bordered system, unnormalised).
+pub(super) fn border_rhs_solution<P: Problem + ?Sized>(sys: &mut System<'_, P>) -> Result<State> {
+    let mut r = sys.zero_residual();
+    let nd = r.dense.len();
+    r.dense[nd - 1] = -1.0;
+    let mut t = sys.zero_state();
+    sys.solve(&r, &mut t)?;
+    Ok(t)
+}
 
 /// A corrected point with its tangent and determinant (internal).
 pub(super) struct Corrected {
@@ -28,33 +69,18 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
 
     /// Border row ⟨· − x₀, τ₀⟩ = ds.
     pub(super) fn set_tangent_border(&mut self, ds: f64) {
-        self.sys.collocation_values(&self.t0, &mut self.ycol_a);
-        self.sys.collocation_values(&self.x0, &mut self.ycol_b);
-        let border = &mut self.sys.border;
-        self.norm.row(
-            (&self.ycol_a, &self.t0.p),
-            &self.sys.free,
-            &mut border.coef_y,
-            &mut border.coef_q,
+        set_hyperplane(
+            &mut self.sys,
+            &self.norm,
+            (&self.x0, &self.t0),
+            ds,
+            (&mut self.ycol_b, &mut self.ycol_a),
         );
-        let mut target = ds;
-        for (c, x) in border.coef_y.iter().zip(&self.ycol_b) {
-            target += c * x;
-        }
-        for (c, &q) in border.coef_q.iter().zip(&self.sys.free) {
-            target += c * self.x0.p[q];
-        }
-        border.target[0] = target;
     }
 
     /// Solves J τ = e_border with the current factorisation.
     pub(super) fn solve_border_rhs(&mut self) -> Result<State> {
-        let mut r = self.sys.zero_residual();
-        let nd = r.dense.len();
-        r.dense[nd - 1] = -1.0;
-        let mut t = self.sys.zero_state();
-        self.sys.solve(&r, &mut t)?;
-        Ok(t)
+        border_rhs_solution(&mut self.sys)
     }
 
     /// Corrects from x₀ at arclength `ds` along τ₀; factorises at the

@@ -53,7 +53,7 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
                 Err(Error::SingularJacobian { .. }) => {
                     // Landed exactly on the singular point: step off it by
                     // a fraction of the tolerance.
-                    let nudge = 0.5 * self.cont.locate_tolerance * (b - a).signum();
+                    let nudge = 0.5 * self.locate_tolerance * (b - a).signum();
                     self.correct(s + nudge, false)?
                 }
                 r => r?,
@@ -62,10 +62,10 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
                 Watch::Event(i) => self.event_value(i, &c.x)?,
                 _ => self.watch_value(w, &c, log_ref),
             };
-            let done = (s - prev).abs() <= self.cont.locate_tolerance || fs == 0.0;
+            let done = (s - prev).abs() <= self.locate_tolerance || fs == 0.0;
             prev = s;
             best = Some((c, s));
-            if done || (b - a).abs() <= self.cont.locate_tolerance {
+            if done || (b - a).abs() <= self.locate_tolerance {
                 break;
             }
             if fs * fb < 0.0 {
@@ -80,7 +80,7 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         best.ok_or(Error::NewtonNotConverged {
             iterations: 0,
             correction: f64::NAN,
-            tolerance: self.cont.locate_tolerance,
+            tolerance: self.locate_tolerance,
         })
     }
 }

@@ -68,10 +68,12 @@
 //! *Lectures on Numerical Methods in Bifurcation Problems* (1987).
 
 mod corrector;
+mod diagram;
 mod difference;
 mod fold_curve;
 mod fold_extended;
 mod locate;
+mod mesh_error;
 mod norm;
 mod observer;
 mod point;
@@ -82,7 +84,9 @@ mod steps;
 mod switch;
 mod termination;
 
+pub use diagram::Output;
 pub use fold_curve::{FoldContinuation, FoldCurve, FoldObserver, FoldPoint, FoldPointKind};
+pub use mesh_error::ErrorEstimate;
 pub use observer::{Every, Observer};
 pub use point::{Point, PointKind};
 pub use run::Run;

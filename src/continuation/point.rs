@@ -56,6 +56,8 @@ pub struct Point {
     pub(super) determinant_sign: f64,
     pub(super) kind: PointKind,
     pub(super) tangent: Option<State>,
+    pub(super) diagram: [f64; 2],
+    pub(super) diagram_slope: [f64; 2],
 }
 
 impl Point {
@@ -103,6 +105,21 @@ impl Point {
     #[must_use]
     pub fn determinant_sign(&self) -> f64 {
         self.determinant_sign
+    }
+
+    /// The point (σ_λ λ, σ_g g) in the plane of the diagram
+    /// ([`Continuation::diagram`](super::Continuation::diagram)).
+    #[must_use]
+    pub fn diagram(&self) -> [f64; 2] {
+        self.diagram
+    }
+
+    /// Its derivative along the branch, d/ds of [`Self::diagram`] (s the
+    /// arclength): with the points, the data of the branch's cubic Hermite
+    /// interpolant.
+    #[must_use]
+    pub fn diagram_slope(&self) -> [f64; 2] {
+        self.diagram_slope
     }
 
     /// What the point is.

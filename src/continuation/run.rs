@@ -3,6 +3,7 @@
 use std::fmt;
 use std::ops::ControlFlow;
 
+use super::mesh_error::ErrorEstimate;
 use super::{Continuation, Observer, Point, PointKind, Steps, Termination};
 use crate::bvp::{Problem, Solution};
 use crate::error::Result;
@@ -16,9 +17,18 @@ pub struct Run {
     accepted: usize,
     rejected: usize,
     newton_iterations: u64,
+    estimate: ErrorEstimate,
 }
 
 impl Run {
+    /// With a [`tolerance`](Continuation::tolerance): the errors the run
+    /// measured in the diagram's plane ([`ErrorEstimate`]); without one, all
+    /// zero.
+    #[must_use]
+    pub fn estimate(&self) -> ErrorEstimate {
+        self.estimate
+    }
+
     /// Every point, in order.
     #[must_use]
     pub fn points(&self) -> &[Point] {
@@ -123,6 +133,7 @@ pub(super) fn drive<P: Problem + ?Sized, O: Observer>(
         accepted: steps.accepted,
         rejected: steps.rejected,
         newton_iterations: steps.newton_iterations,
+        estimate: steps.estimate,
     }
 }
 

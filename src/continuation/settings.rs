@@ -3,6 +3,7 @@
 use std::fmt;
 use std::sync::Arc;
 
+use super::diagram::{Diagram, Output};
 use crate::bvp::{Collocation, Solution};
 use crate::error::{Error, Result};
 
@@ -57,6 +58,9 @@ pub struct Continuation {
     pub(super) locate_tolerance: f64,
     pub(super) stops: Vec<f64>,
     pub(super) events: Vec<EventFn>,
+    pub(super) tolerance: Option<f64>,
+    pub(super) adapt_mesh: bool,
+    pub(super) diagram: Diagram,
 }
 
 impl fmt::Debug for Continuation {
@@ -70,6 +74,8 @@ impl fmt::Debug for Continuation {
             .field("max_steps", &self.max_steps)
             .field("stops", &self.stops)
             .field("events", &self.events.len())
+            .field("tolerance", &self.tolerance)
+            .field("diagram", &self.diagram)
             .finish_non_exhaustive()
     }
 }
@@ -103,6 +109,8 @@ impl Continuation {
     /// | [`locate_tolerance`](Self::locate_tolerance) | 1e-10 in arclength | finite, > 0 |
     /// | [`stop_at`](Self::stop_at) values | none | finite |
     /// | [`stop_when`](Self::stop_when) events | none | |
+    /// | [`tolerance`](Self::tolerance) | none (fixed mesh, Newton and location tolerances as set) | 1e-12 ≤ tol ≤ 1 |
+    /// | [`diagram`](Self::diagram) | ([`Output::Norm`], σ_λ = 1, σ_g = 1) | component or parameter in range; scales finite, > 0 |
     ///
     /// The setters never fail. [`run`](Self::run), [`steps`](Self::steps),
     /// [`run_from_branch_point`](Self::run_from_branch_point),
@@ -128,6 +136,9 @@ impl Continuation {
             locate_tolerance: 1e-10,
             stops: Vec::new(),
             events: Vec::new(),
+            tolerance: None,
+            adapt_mesh: true,
+            diagram: Diagram::default(),
         }
     }
 
@@ -247,7 +258,68 @@ impl Continuation {
         self
     }
 
+    /// The accuracy wanted on the curve in the plane of the
+    /// [`diagram`](Self::diagram): the max-norm distance between the computed
+    /// branch (its points, its located folds and stops, and the cubic Hermite
+    /// interpolant between points, [`Point::diagram`](super::Point::diagram)
+    /// and [`Point::diagram_slope`](super::Point::diagram_slope)) and the exact one.
+    ///
+    /// With a tolerance the run chooses, from it:
+    /// - the mesh during the run: the error of the points is measured by
+    ///   re-solving them on the mesh with every interval halved (at the
+    ///   start, at every located point, and wherever the mesh density
+    ///   ∫‖y^(m+1)‖^(1/(m+1)) changed by 10 % since the last check); a point
+    ///   off by more than half the tolerance is computed again on an
+    ///   equidistributed mesh with N·(e/(tol/4))^(1/2m) intervals, and a
+    ///   mesh far finer than needed is coarsened the same way;
+    /// - the step: besides the corrector and the angle between tangents, the
+    ///   interpolation error of the cubic Hermite interpolant of the step
+    ///   (h⁴ ‖P''''‖/384) is kept below a quarter of the tolerance;
+    /// - the corrector's Newton tolerance 1e-4·tol (within [1e-12, 1e-6]) and
+    ///   the location tolerance 0.05·tol (in arclength).
+    ///
+    /// What was achieved is in [`Run::estimate`](super::Run::estimate). The
+    /// collocation degree stays the solver's (the rod's pull chooses it
+    /// from the tolerance).
+    #[must_use]
+    pub fn tolerance(mut self, tol: f64) -> Self {
+        self.tolerance = Some(tol);
+        self
+    }
+
+    /// With a [`tolerance`](Self::tolerance): whether the mesh follows it
+    /// (default) or stays the start solution's, the error still being
+    /// measured and reported in [`Run::estimate`](super::Run::estimate).
+    #[must_use]
+    pub fn adapt_mesh(mut self, on: bool) -> Self {
+        self.adapt_mesh = on;
+        self
+    }
+
+    /// The plane of the bifurcation diagram in which the
+    /// [`tolerance`](Self::tolerance) is measured: (σ_λ λ, σ_g g) for the
+    /// `output` g.
+    #[must_use]
+    pub fn diagram(mut self, output: Output, lambda_scale: f64, output_scale: f64) -> Self {
+        self.diagram = Diagram {
+            output,
+            lambda_scale,
+            output_scale,
+        };
+        self
+    }
+
     pub(super) fn validate(&self, n: usize, np: usize) -> Result<()> {
+        if let Some(tol) = self.tolerance
+            && !((1e-12..=1.0).contains(&tol))
+        {
+            return Err(Error::InvalidArgument {
+                name: "tolerance",
+                value: tol,
+                allowed: "1e-12 ≤ tol ≤ 1 (an absolute distance in the diagram's plane)",
+            });
+        }
+        self.diagram.validate(n, np)?;
         if self.parameter >= np {
             return Err(Error::InvalidCount {
                 name: "continuation parameter",

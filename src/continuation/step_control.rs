@@ -19,6 +19,7 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
                     let cosang = self.inner(&c.tangent, &self.t0.clone());
                     let angle = cosang.clamp(-1.0, 1.0).acos();
                     if angle <= self.cont.max_angle {
+                        self.angle = angle;
                         return Some(c);
                     }
                     if self.ds <= self.cont.ds_min {
@@ -43,14 +44,22 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         }
     }
 
-    /// The next Δs after an accepted step whose corrector took `iterations`.
-    pub(super) fn adapt_step(&mut self, iterations: u32) {
-        let factor = match iterations {
+    /// The next Δs after an accepted step whose corrector took
+    /// `iterations`, limited so that the next angle between tangents is
+    /// about 0.6 of the maximum and by the interpolation's `limit` factor.
+    pub(super) fn adapt_step(&mut self, iterations: u32, limit: f64) {
+        let by_iterations: f64 = match iterations {
             0..=4 => 2.0,
             5 => 1.5,
             6 => 1.1,
             _ => 0.5,
         };
+        let by_angle = if self.angle > 0.0 {
+            0.6 * self.cont.max_angle / self.angle
+        } else {
+            f64::INFINITY
+        };
+        let factor = by_iterations.min(by_angle).min(limit).max(0.25);
         self.ds = (self.ds * factor).clamp(self.cont.ds_min, self.cont.ds_max);
     }
 }

@@ -34,9 +34,9 @@ use std::time::{Duration, Instant};
 use super::{Equilibrium, Rod};
 use crate::bvp::{Collocation, Mesh, Solution};
 use crate::continuation::{
-    Continuation, Observer, Point, PointKind, Steps, Termination, drive_into,
+    Continuation, ErrorEstimate, Observer, Output, Point, PointKind, Steps, Termination, drive_into,
 };
-use crate::curve::{Fold, FoldKind, ForceExtension, ForcePoint};
+use crate::curve::{Fold, FoldKind, ForceExtension, ForcePoint, Slope};
 use crate::error::{Error, Result};
 use crate::load::{Control, Target};
 
@@ -55,9 +55,33 @@ pub struct PullRun {
     rejected: usize,
     newton_iterations: u64,
     elapsed: Duration,
+    tolerance: f64,
+    estimate: ErrorEstimate,
+    points_per_interval: usize,
 }
 
 impl PullRun {
+    /// The tolerance the pull was asked for.
+    #[must_use]
+    pub fn tolerance(&self) -> f64 {
+        self.tolerance
+    }
+
+    /// The errors the run measured, in the plane (Δz, F/((2πn)²B)) of the
+    /// paper's plots ([`ErrorEstimate`]): of the points against the halved
+    /// mesh, of the located folds, and of the cubic Hermite interpolant
+    /// between points ([`ForceExtension::force_at`]).
+    #[must_use]
+    pub fn estimate(&self) -> ErrorEstimate {
+        self.estimate
+    }
+
+    /// The collocation points per interval m the run used.
+    #[must_use]
+    pub fn points_per_interval(&self) -> usize {
+        self.points_per_interval
+    }
+
     /// The rod that was pulled (with the control of its target).
     #[must_use]
     pub fn rod(&self) -> &Rod {
@@ -133,15 +157,18 @@ impl core::fmt::Display for PullRun {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         writeln!(
             f,
-            "pull of {} to {}: {} points, {} folds, {} steps ({} rejected), {:.2?}: {}",
+            "pull of {} to {} (tolerance {:.0e}): {} points, {} folds, {} steps ({} rejected), {:.2?}: {}\n  {}, m = {}",
             self.rod,
             self.target,
+            self.tolerance,
             self.curve.len(),
             self.folds.len(),
             self.steps,
             self.rejected,
             self.elapsed,
-            self.termination
+            self.termination,
+            self.estimate,
+            self.points_per_interval
         )?;
         for fold in &self.folds {
             writeln!(
@@ -172,8 +199,9 @@ impl core::fmt::Display for PullRun {
 pub struct Pull {
     rod: Rod,
     target: Target,
-    intervals: usize,
-    points: usize,
+    tolerance: f64,
+    intervals: Option<usize>,
+    points: Option<usize>,
     first_step: Option<f64>,
     ds_min: f64,
     ds_max: f64,
@@ -186,17 +214,26 @@ pub struct Pull {
 /// sets the first step (module docs).
 const START_LOAD: f64 = 1e-4;
 
+/// The default tolerance of a pull (the bar: the paper's folds to
+/// 1e-6).
+const DEFAULT_TOLERANCE: f64 = 1e-6;
+
+/// Mesh intervals per coil of the first mesh (the start's check refines or
+/// coarsens it).
+const START_INTERVALS_PER_COIL: usize = 3;
+
 impl Pull {
     /// A pull of `rod` to `target` (force control for [`Target::Force`],
     /// extension control for [`Target::Extension`]) with the defaults:
     ///
     /// | setting | default |
     /// |---|---|
-    /// | [`intervals`](Self::intervals) | 48 uniform mesh intervals (folds converged to 6e-7 against 128) |
-    /// | [`points`](Self::points) | 4 Gauss points per interval |
-    /// | [`step`](Self::step) | first Δs: the distance to a load 1e-4 away (module docs); within [1e-7, 0.02] |
+    /// | [`tolerance`](Self::tolerance) | 1e-6 in (Δz, F/((2πn)²B)), 1e-12 ≤ tol ≤ 1e-1 |
+    /// | [`points`](Self::points) | from the tolerance: m = 4 (tol ≥ 1e-4), 5 (≥ 1e-7), 6 (≥ 1e-9), 7 |
+    /// | [`intervals`](Self::intervals) | adaptive, from 3n equidistributed intervals (n coils) |
+    /// | [`step`](Self::step) | first Δs: the distance to a load 1e-4 away (module docs); within [1e-7, 1] |
     /// | [`max_steps`](Self::max_steps) | 20 000 |
-    /// | [`max_angle`](Self::max_angle) | 0.3 rad between successive tangents |
+    /// | [`max_angle`](Self::max_angle) | 0.4 rad between successive tangents |
     /// | [`locate_folds`](Self::locate_folds) | yes |
     ///
     /// Setters do not fail; [`Pull::check`] (called by [`Pull::run`] and
@@ -207,13 +244,14 @@ impl Pull {
         Self {
             rod: rod.with_control(target.control()),
             target,
-            intervals: 48,
-            points: 4,
+            tolerance: DEFAULT_TOLERANCE,
+            intervals: None,
+            points: None,
             first_step: None,
             ds_min: 1e-7,
-            ds_max: 0.02,
+            ds_max: 1.0,
             max_steps: 20_000,
-            max_angle: 0.3,
+            max_angle: 0.4,
             locate_folds: true,
         }
     }
@@ -226,17 +264,30 @@ impl Pull {
         self
     }
 
-    /// Number of uniform mesh intervals.
+    /// The accuracy wanted on the curve and its folds, in the plane
+    /// (Δz, F/((2πn)²B)) of the paper's plots (max-norm distance; see
+    /// [`Continuation::tolerance`]): from it the pull chooses the
+    /// collocation degree, the mesh (during the run), the steps, and the
+    /// Newton and location tolerances, and reports what it achieved in
+    /// [`PullRun::estimate`].
     #[must_use]
-    pub fn intervals(mut self, n: usize) -> Self {
-        self.intervals = n;
+    pub fn tolerance(mut self, tol: f64) -> Self {
+        self.tolerance = tol;
         self
     }
 
-    /// Gauss points per interval (2..=7).
+    /// Expert override: a fixed uniform mesh of `n` intervals (no
+    /// adaptation; the error is still measured and reported).
+    #[must_use]
+    pub fn intervals(mut self, n: usize) -> Self {
+        self.intervals = Some(n);
+        self
+    }
+
+    /// Expert override: Gauss points per interval (2..=7).
     #[must_use]
     pub fn points(mut self, m: usize) -> Self {
-        self.points = m;
+        self.points = Some(m);
         self
     }
 
@@ -283,10 +334,31 @@ impl Pull {
         self.target
     }
 
-    /// The number of mesh intervals.
+    /// The number of mesh intervals the pull starts with: the override, or
+    /// from the tolerance and m, n·c_m·tol^(−1/2m) (the superconvergent
+    /// error ∝ (n/N)^2m of the folds, c_m calibrated on the paper's
+    /// spring, where the third pop-out needs the finest mesh), and never
+    /// fewer than 3 per coil. The run refines it where its checks ask.
     #[must_use]
     pub fn mesh_intervals(&self) -> usize {
-        self.intervals
+        self.intervals.unwrap_or_else(|| {
+            let m = self.points_per_interval();
+            let per_coil = 1.45 * self.tolerance.powf(-0.5 / m as f64);
+            let n = f64::from(self.rod.coils());
+            ((n * per_coil).ceil() as usize).max(START_INTERVALS_PER_COIL * n as usize)
+        })
+    }
+
+    /// The collocation points per interval m: the override, or the
+    /// tolerance's choice.
+    #[must_use]
+    pub fn points_per_interval(&self) -> usize {
+        self.points.unwrap_or(match self.tolerance {
+            t if t >= 1e-4 => 4,
+            t if t >= 1e-7 => 5,
+            t if t >= 1e-9 => 6,
+            _ => 7,
+        })
     }
 
     /// Validates every setting and the target, and returns the collocation
@@ -362,9 +434,16 @@ impl Pull {
                 allowed: "at least 1 step",
             });
         }
+        if !(1e-12..=1e-1).contains(&self.tolerance) {
+            return Err(Error::InvalidArgument {
+                name: "tolerance",
+                value: self.tolerance,
+                allowed: "1e-12 ≤ tol ≤ 1e-1 (in Δz and F/((2πn)²B))",
+            });
+        }
         let solver = Collocation::new()
-            .points(self.points)
-            .mesh(Mesh::uniform(self.intervals)?)
+            .points(self.points_per_interval())
+            .mesh(Mesh::uniform(self.mesh_intervals())?)
             .max_newton(12);
         solver.validate()?;
         Ok(solver)
@@ -394,6 +473,27 @@ impl Pull {
                 (Rod::EXTENSION, 1.0, dz, rest_extension)
             }
         };
+        // the plane of the paper's plots: (F/((2πn)²B), Δz) under force
+        // control, (Δz, F/((2πn)²B)) under extension control
+        let (output, lambda_scale, output_scale) = match self.target {
+            Target::Force(_) => (
+                Output::EndValue {
+                    component: 2,
+                    right: true,
+                },
+                1.0 / scale,
+                1.0,
+            ),
+            // the end force F_z = y₉(0) (the force is a state of the rod)
+            Target::Extension(_) => (
+                Output::EndValue {
+                    component: 9,
+                    right: false,
+                },
+                1.0,
+                1.0 / scale,
+            ),
+        };
         let sign = if stop >= from { 1.0 } else { -1.0 };
         let rest = if rod.control() == Control::Extension {
             solver.solve(&rod, &rest, &p0)?
@@ -407,7 +507,9 @@ impl Pull {
             .step_bounds(self.ds_min, self.ds_max)
             .max_steps(self.max_steps)
             .max_angle(self.max_angle)
-            .locate_tolerance(1e-9)
+            .tolerance(self.tolerance)
+            .adapt_mesh(self.intervals.is_none())
+            .diagram(output, lambda_scale, output_scale)
             .detect_folds(self.locate_folds)
             .detect_branch_points(false)
             .stop_at(stop);
@@ -454,6 +556,7 @@ impl Pull {
         let mut trace = start.steps()?;
         let mut recorder = Recorder::new(&start, self.locate_folds);
         let termination = drive_into(&mut trace, &mut observer, |p| recorder.record(&p));
+        let estimate = trace.estimate();
         Ok(PullRun {
             rod: start.rod,
             target: start.target,
@@ -466,6 +569,9 @@ impl Pull {
             newton_iterations: trace.newton_iterations()
                 + u64::from(start.rest.newton().iterations),
             elapsed: clock.elapsed(),
+            tolerance: self.tolerance,
+            estimate,
+            points_per_interval: self.points_per_interval(),
         })
     }
 }
@@ -554,7 +660,19 @@ impl Recorder {
             self.folds.push(Fold { kind, index, point });
         }
         if !located {
-            self.curve.push(at);
+            let [dl, dg] = p.diagram_slope();
+            let scale = self.curve.force_scale();
+            let slope = match self.rod.control() {
+                Control::Force => Slope {
+                    extension: dg,
+                    force: dl * scale,
+                },
+                Control::Extension => Slope {
+                    extension: dl,
+                    force: dg * scale,
+                },
+            };
+            self.curve.push_with_slope(at, slope);
             self.loops.push(eq.loops());
             self.last_dl = dl;
         }

@@ -340,6 +340,11 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
         })
     }
 
+    /// The problem the system discretises.
+    pub(crate) fn problem(&self) -> &'a P {
+        self.problem
+    }
+
     pub(crate) fn nd(&self) -> usize {
         self.nint + self.border.rows
     }

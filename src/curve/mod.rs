@@ -8,6 +8,9 @@
 
 use std::io;
 
+mod dense;
+pub use dense::Slope;
+
 use crate::error::{Error, Result};
 
 /// One equilibrium on a force–extension curve.
@@ -142,6 +145,8 @@ pub struct ForceExtension {
     parameter_name: String,
     scale: ForceScale,
     points: Vec<ForcePoint>,
+    #[cfg_attr(feature = "serde", serde(default))]
+    slopes: Vec<Option<Slope>>,
 }
 
 impl ForceExtension {
@@ -158,12 +163,15 @@ impl ForceExtension {
             parameter_name: parameter_name.into(),
             scale,
             points: Vec::new(),
+            slopes: Vec::new(),
         }
     }
 
-    /// Appends a point at the end of the curve.
+    /// Appends a point at the end of the curve, without a slope (the
+    /// interpolant is linear next to it; see [`Self::push_with_slope`]).
     pub fn push(&mut self, point: ForcePoint) {
         self.points.push(point);
+        self.slopes.push(None);
     }
 
     /// What the curve is (a branch name, a model name).
@@ -251,7 +259,9 @@ impl ForceExtension {
 
 impl Extend<ForcePoint> for ForceExtension {
     fn extend<I: IntoIterator<Item = ForcePoint>>(&mut self, iter: I) {
-        self.points.extend(iter);
+        for p in iter {
+            self.push(p);
+        }
     }
 }
 
