@@ -11,13 +11,17 @@
 //! | [`Termination`] | why a run ended: step limit, stop value or event reached, stopped by the observer, or failed with a typed [`Error`](crate::Error) |
 //! | [`Point`] | one solution on the branch, with arclength, dλ/ds, determinant sign and its [`PointKind`] |
 //! | [`BranchSide`] | which side of a branch point [`Continuation::run_from_branch_point`] starts on |
+//! | [`Continuation::tolerance`], [`Output`] → [`ErrorEstimate`] | the accuracy wanted in the plane of the bifurcation diagram (λ, an output of the solution), and what the run achieved |
 //! | [`FoldContinuation`] → [`FoldCurve`] | a fold continued in a second parameter (the extended problem, AUTO's ISW = 2), its [`FoldPoint`]s with turns and cusps ([`FoldPointKind`]), [`FoldObserver`] hooks |
 //!
 //! The files: `settings` (the builder and its validation), `run` and
 //! `steps` (the two ways to drive a run), `observer`, `termination`,
 //! `point`, `norm` (the integral inner product), `corrector` (predictor,
 //! chord Newton, tangent), `difference` (F_x·t by central differences),
-//! `step_control`, `locate` (special points),
+//! `step_control`, `diagram` (the plane of a tolerance, the Hermite
+//! interpolant's error), `mesh_error` (the check against the halved mesh,
+//! the remesh), `tolerance` (the checks of a step with a tolerance),
+//! `locate` (special points),
 //! `switch` (branch switching), `fold_extended` (the extended problem of a
 //! fold) and `fold_curve` (its continuation in a second parameter, cusps).
 //!
@@ -52,9 +56,15 @@
 //! within [Δs_min, Δs_max]. k counts chord iterations (the factorisation of
 //! the previous point is reused) to the tight default tolerance 1e-10,
 //! including the final one: about three more than AUTO counts with fresh
-//! Jacobians at its looser EPSU = 1e-6, hence the shifted thresholds. A
+//! Jacobians at its looser EPSU = 1e-6, hence the shifted thresholds. The
+//! growth is also limited so that the next angle between tangents is about
+//! 0.6 of the maximum angle (the angle grows with Δs). A
 //! failed corrector, or a tangent turning by more than the maximum angle,
-//! halves Δs and retries. Folds are sign changes of dλ/ds,
+//! halves Δs and retries. With a [`tolerance`](Continuation::tolerance)
+//! the step also keeps the cubic Hermite interpolant of the branch in the
+//! diagram's plane within a quarter of it, the turn of that interpolant's
+//! slope within the maximum angle, and the corrected point within 0.2 Δs
+//! of the predictor; and the mesh follows the solution (see there). Folds are sign changes of dλ/ds,
 //! branch points sign changes of det [F_x; τᵀ]; both are located by the
 //! Illinois (modified regula falsi) iteration on the arclength of the step,
 //! as are the stops: a requested value of λ (looked for on each piece of
@@ -83,6 +93,7 @@ mod step_control;
 mod steps;
 mod switch;
 mod termination;
+mod tolerance;
 
 pub use diagram::Output;
 pub use fold_curve::{FoldContinuation, FoldCurve, FoldObserver, FoldPoint, FoldPointKind};

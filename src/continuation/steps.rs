@@ -3,9 +3,9 @@
 use std::collections::VecDeque;
 use std::fmt;
 
-use super::diagram::{hermite_error, hermite_third, turns_back_twice};
 use super::mesh_error::{ErrorEstimate, HalvedMesh};
 use super::norm::IntegralNorm;
+use super::tolerance::{INTERPOLATION_SHARE, StepCheck, hermite_factor};
 use super::{BranchSide, Continuation, Point, PointKind, Termination};
 use crate::bvp::system::{State, System};
 use crate::bvp::{NewtonOptions, Problem, Solution, finish};
@@ -60,25 +60,6 @@ pub struct Steps<'a, P: Problem + ?Sized> {
     /// The accepted-step count at the last mesh check.
     pub(super) checked_at: usize,
 }
-
-/// Remeshes allowed for one step (a step whose error is still above the
-/// tolerance after them is accepted, with its estimate).
-const REMESHES_PER_STEP: u32 = 4;
-
-/// The chord in the diagram's plane below which a step's turn is not
-/// limited.
-const TURN_CHORD: f64 = 1e-2;
-
-/// The largest distance between the corrected point and the predictor,
-/// relative to the step, of an accepted step with a tolerance (a larger one
-/// is the mark of a trace that jumped to a nearby branch).
-const MAX_DRIFT: f64 = 0.2;
-
-/// Accepted steps between two mesh checks at most.
-const CHECK_EVERY: usize = 4;
-
-/// Relative change of the mesh density integral that triggers a check.
-const DENSITY_CHANGE: f64 = 0.1;
 
 impl Continuation {
     /// A step-by-step iterator over the branch through `start` (a solution
@@ -378,6 +359,22 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         }
         let in_step = self.special_points_in_step(&c, ds);
         let mut coarsen = None;
+        if let (Some(tol), Some(h)) = (self.cont.tolerance, hermite.as_mut()) {
+            let inside: Vec<(State, State, f64)> = in_step
+                .found
+                .iter()
+                .map(|(cs, s, ..)| (cs.x.clone(), cs.tangent.clone(), *s))
+                .collect();
+            let at_located = self.located_interpolation_error(&c, ds, &inside);
+            if at_located > 4.0 * INTERPOLATION_SHARE * tol && self.ds > self.cont.ds_min {
+                self.ds = (0.5 * ds).max(self.cont.ds_min);
+                self.factored_at_x0 = false;
+                self.rejected += 1;
+                self.rejections.push(self.ds);
+                return;
+            }
+            h.1 = h.1.max(at_located);
+        }
         if let Some(tol) = self.cont.tolerance {
             let located: Vec<(State, State, bool)> = in_step
                 .found
@@ -469,174 +466,6 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             // (a failed coarsening keeps the finer mesh)
             self.last_third = None;
         }
-    }
-}
-
-/// The angle between two slopes in the diagram's plane (0 when either
-/// vanishes).
-fn diagram_turn(a: [f64; 2], b: [f64; 2]) -> f64 {
-    let (na, nb) = (a[0].hypot(a[1]), b[0].hypot(b[1]));
-    if na > 0.0 && nb > 0.0 && na.is_finite() && nb.is_finite() {
-        ((a[0] * b[0] + a[1] * b[1]) / (na * nb))
-            .clamp(-1.0, 1.0)
-            .acos()
-    } else {
-        0.0
-    }
-}
-
-/// The share of the tolerance left to the interpolation between points.
-const INTERPOLATION_SHARE: f64 = 0.25;
-
-/// The step factor that brings the Hermite interpolation error `error` to
-/// 0.8 of its share of `tol` (error ∝ h⁴).
-fn hermite_factor(error: f64, tol: f64) -> f64 {
-    if error > 0.0 {
-        (0.8 * INTERPOLATION_SHARE * tol / error).powf(0.25)
-    } else {
-        f64::INFINITY
-    }
-}
-
-/// What the mesh checks of a step decided.
-enum StepCheck {
-    /// The run moved to a finer mesh at x₀: the step is done again.
-    Remeshed,
-    /// The step stands; coarsen to this many intervals after it.
-    Accept { coarsen_to: Option<usize> },
-}
-
-impl<P: Problem + ?Sized> Steps<'_, P> {
-    /// The mesh check of the start point: refine (or coarsen, once) until
-    /// its error is within half the tolerance.
-    fn check_start(&mut self, tol: f64) -> Result<()> {
-        let goal = 0.5 * tol;
-        let mut coarsened = false;
-        for _ in 0..8 {
-            let (x, t) = (self.x0.clone(), self.t0.clone());
-            let e = self.mesh_error(&x, &t, false).unwrap_or(f64::INFINITY);
-            let nn = self.mesh.intervals();
-            let want = self.intervals_for(e, 0.25 * tol);
-            let limit = self.cont.solver.interval_limit();
-            if !self.cont.adapt_mesh {
-                self.estimate.mesh = e;
-                break;
-            }
-            if e > goal && nn < limit {
-                self.remesh(want.max(nn + nn / 4 + 1).min(limit))?;
-            } else if e <= goal && !coarsened && 10 * want.max(self.min_intervals) <= 7 * nn {
-                coarsened = true;
-                self.remesh(want.max(self.min_intervals))?;
-            } else {
-                self.estimate.mesh = e;
-                break;
-            }
-        }
-        self.checked_density = self.density_integral(&self.x0.clone());
-        Ok(())
-    }
-
-    /// The interpolation check of a step: its P''' and error estimate, or
-    /// `None` when the step was rejected (Δs reduced) for an error above
-    /// four times its share of the tolerance.
-    fn check_interpolation(
-        &mut self,
-        c: &super::corrector::Corrected,
-        ds: f64,
-        tol: f64,
-    ) -> Option<([f64; 2], f64)> {
-        // the corrector's distance from the predictor, relative to the step
-        let free = self.sys.free.clone();
-        let mut d = c.x.clone();
-        d.axpy(-1.0, &self.x0.clone(), &free);
-        d.axpy(-ds, &self.t0.clone(), &free);
-        let drift = self.norm(&d) / ds;
-        let (p0, s0) = self.diagram_of(&self.x0, &self.t0);
-        let (p1, s1) = self.diagram_of(&c.x, &c.tangent);
-        let third = hermite_third(p0, s0, p1, s1, ds);
-        let error = self
-            .last_third
-            .map_or(0.0, |(prev, h)| hermite_error(third, prev, ds, h));
-        // (a turn over a chord below a hundredth of the plane's unit is a
-        // corner the interpolation error already resolves)
-        let chord = (p1[0] - p0[0]).abs().max((p1[1] - p0[1]).abs());
-        let turn = if chord > TURN_CHORD {
-            diagram_turn(s0, s1)
-        } else {
-            0.0
-        };
-        let skipped =
-            self.cont.folds && turns_back_twice(p0[0], s0[0], p1[0], s1[0], ds, 0.1 * tol);
-        let too_far = turn > self.cont.max_angle
-            || drift > MAX_DRIFT
-            || skipped
-            || error > 4.0 * INTERPOLATION_SHARE * tol;
-        if too_far && self.ds > self.cont.ds_min {
-            let by_turn = (0.6 * self.cont.max_angle / turn).min(0.5 * MAX_DRIFT / drift);
-            self.ds =
-                (ds * hermite_factor(error, tol).min(by_turn).max(0.25)).max(self.cont.ds_min);
-            self.factored_at_x0 = false;
-            self.rejected += 1;
-            self.rejections.push(self.ds);
-            return None;
-        }
-        self.angle = self.angle.max(turn);
-        Some((third, error))
-    }
-
-    /// The mesh checks of a step: every located point, and the new point
-    /// when the density moved (module docs of `mesh_error`).
-    fn check_step(
-        &mut self,
-        c: &super::corrector::Corrected,
-        located: &[(State, State, bool)],
-        tol: f64,
-    ) -> StepCheck {
-        let goal = 0.5 * tol;
-        let mut worst_located: f64 = 0.0;
-        for (x, t, fold) in located {
-            let e = self.mesh_error(x, t, *fold).unwrap_or(f64::INFINITY);
-            worst_located = worst_located.max(e);
-        }
-        let density = self.density_integral(&c.x);
-        let moved = (density / self.checked_density - 1.0).abs() > DENSITY_CHANGE;
-        let mut regular = None;
-        let due = self.accepted >= self.checked_at + CHECK_EVERY;
-        if moved || due || !located.is_empty() {
-            regular = Some(
-                self.mesh_error(&c.x, &c.tangent, false)
-                    .unwrap_or(f64::INFINITY),
-            );
-        }
-        let worst = worst_located.max(regular.unwrap_or(0.0));
-        let nn = self.mesh.intervals();
-        let limit = self.cont.solver.interval_limit();
-        if self.cont.adapt_mesh
-            && worst > goal
-            && nn < limit
-            && self.remeshes_this_step < REMESHES_PER_STEP
-        {
-            let want = self.intervals_for(worst, 0.25 * tol);
-            self.remeshes_this_step += 1;
-            if let Ok(flipped) = self.remesh(want.max(nn + nn / 4 + 1).min(limit)) {
-                self.last_third = None;
-                self.fold_behind |= flipped && self.cont.folds;
-                return StepCheck::Remeshed;
-            }
-        }
-        self.estimate.mesh = self.estimate.mesh.max(worst);
-        self.estimate.located = self.estimate.located.max(worst_located);
-        let mut coarsen_to = None;
-        if let Some(e) = regular {
-            self.checked_density = density;
-            self.checked_at = self.accepted;
-            let want = self.intervals_for(e, 0.25 * tol);
-            let want = want.max(self.min_intervals);
-            if self.cont.adapt_mesh && e <= goal && located.is_empty() && 10 * want <= 7 * nn {
-                coarsen_to = Some(want);
-            }
-        }
-        StepCheck::Accept { coarsen_to }
     }
 }
 

@@ -103,6 +103,7 @@ pub struct Response {
     folds: Vec<Fold>,
     loops: Vec<Option<u32>>,
     termination: Termination,
+    estimated_error: Option<f64>,
 }
 
 impl Response {
@@ -127,7 +128,24 @@ impl Response {
             folds,
             loops,
             termination,
+            estimated_error: None,
         }
+    }
+
+    /// The same pull with the model's estimate of its own error: the
+    /// largest distance, in (Δz, F/((2πn)²B)), between the returned curve
+    /// (its points, folds and interpolant) and the exact one.
+    #[must_use]
+    pub fn with_estimated_error(mut self, error: f64) -> Self {
+        self.estimated_error = Some(error);
+        self
+    }
+
+    /// The model's estimate of its error in (Δz, F/((2πn)²B)), where the
+    /// model measured one ([`Self::with_estimated_error`]).
+    #[must_use]
+    pub fn estimated_error(&self) -> Option<f64> {
+        self.estimated_error
     }
 
     /// The same pull with the folds of the controlled load that the model

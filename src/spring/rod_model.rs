@@ -13,23 +13,34 @@ use super::{Model, Response, Spring};
 /// continuation; every point carries its loop count.
 ///
 /// Settings are those of [`Pull`]; [`RodModel::default`] uses its defaults
-/// (48 intervals, 4 Gauss points). The rod takes the spring's intrinsic
-/// strains as they are.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+/// (a tolerance of 1e-6 in (Δz, F/((2πn)²B)), from which the pull chooses
+/// its mesh, degree and steps). The rod takes the spring's intrinsic
+/// strains as they are. The [`Response`] carries the run's estimated error
+/// ([`Response::estimated_error`]).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct RodModel {
+    tolerance: Option<f64>,
     intervals: Option<usize>,
     points: Option<usize>,
 }
 
 impl RodModel {
-    /// The same model on a mesh of `intervals` uniform intervals.
+    /// The same model at the accuracy `tol` ([`Pull::tolerance`]).
+    #[must_use]
+    pub fn tolerance(mut self, tol: f64) -> Self {
+        self.tolerance = Some(tol);
+        self
+    }
+
+    /// Expert override: a fixed mesh of `intervals` uniform intervals
+    /// ([`Pull::intervals`]).
     #[must_use]
     pub fn intervals(mut self, intervals: usize) -> Self {
         self.intervals = Some(intervals);
         self
     }
 
-    /// The same model with `points` Gauss points per interval (2..=7).
+    /// Expert override: `points` Gauss points per interval (2..=7).
     #[must_use]
     pub fn points(mut self, points: usize) -> Self {
         self.points = Some(points);
@@ -57,6 +68,9 @@ impl RodModel {
     /// As [`RodModel::rod`] and [`Pull::check`].
     pub fn driver(&self, spring: &Spring, target: Target) -> Result<Pull> {
         let mut pull = Pull::new(Self::rod(spring)?, target);
+        if let Some(tol) = self.tolerance {
+            pull = pull.tolerance(tol);
+        }
         if let Some(n) = self.intervals {
             pull = pull.intervals(n);
         }
@@ -94,6 +108,7 @@ impl RodModel {
         )
         .with_folds(run.folds().to_vec())?
         .with_loops(run.loops().to_vec())
+        .map(|r| r.with_estimated_error(run.estimate().curve()))
     }
 }
 

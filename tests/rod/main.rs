@@ -9,4 +9,5 @@ mod diamonds;
 mod input;
 mod jacobians;
 mod planar;
+mod tolerance;
 mod unstressed;
