@@ -164,6 +164,7 @@
 //!   *Precise and fast computation of Jacobian elliptic functions by
 //!   conditional duplication*, Numer. Math. 123 (2013) 585–605.
 
+mod amplitude;
 mod carlson;
 #[rustfmt::skip]
 mod carlson_series;
