@@ -327,6 +327,22 @@ fn interleaved() {
     }
 }
 
+/// `Elastica::centreline` (the elastica's shape sampling: one Jacobi value
+/// per sample plus a Gauss–Legendre quadrature of z′ = 2sn² − 1 between
+/// samples, all at one modulus), µs per call, minimum of 30 calls.
+fn centreline() {
+    for k in [0.5, 0.9, 0.999] {
+        let e = hockle::elastica::Elastica::symmetric(4, k).unwrap().upsilon;
+        let mut best = f64::INFINITY;
+        for _ in 0..30 {
+            let t = Instant::now();
+            black_box(e.centreline(black_box(1000)).unwrap());
+            best = best.min(t.elapsed().as_secs_f64() * 1e6);
+        }
+        println!("  Elastica::symmetric(4, {k}).upsilon.centreline(1000): {best:.1} µs");
+    }
+}
+
 /// Solving cn(u₀ | m) = c₀ for m (the kind of equation the elastica solves
 /// in its modulus), from m = 0.5, to |Δm| ≤ 1e-14: Newton with the
 /// derivative from `jacobi_dm` against the secant method (no derivative,
@@ -401,6 +417,7 @@ criterion_group!(benches, bench);
 fn main() {
     interleaved();
     newton_in_m();
+    centreline();
     benches();
     Criterion::default().configure_from_args().final_summary();
 }

@@ -7,7 +7,7 @@ use nalgebra::Point2;
 use super::integrals::{SMALL_M, i_between, i_period};
 use crate::error::{Error, Result, check_points};
 use crate::quadrature::gauss_legendre;
-use crate::special::{Jacobi, Modulus, ellip_e, ellip_e_inc, jacobi, jacobi_epsilon};
+use crate::special::{FixedModulus, Jacobi, Modulus, ellip_e, ellip_e_inc, jacobi, jacobi_epsilon};
 
 /// The shape class of a solution (the paper's Greek letters).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -385,12 +385,16 @@ impl Elastica {
     /// [`Error::InvalidCount`] if `samples` < 2 or > [`MAX_POINTS`](crate::error::MAX_POINTS).
     pub fn centreline(&self, samples: usize) -> Result<Vec<Point2<f64>>> {
         check_points("samples", samples)?;
-        let j1 = jacobi(self.u1, self.modulus);
+        // Every value here is at one modulus: K, the reduction constants and
+        // the series are formed once (`FixedModulus`), not at each of the
+        // ~10 Jacobi evaluations per sample.
+        let fixed = FixedModulus::new(self.modulus);
+        let j1 = fixed.jacobi(self.u1);
         let mut out = Vec::with_capacity(samples);
         let mut z = 0.0;
         let mut s_prev = 0.0;
         let zprime = |u: f64| {
-            let sn = jacobi(u, self.modulus).sn;
+            let sn = fixed.jacobi(u).sn;
             2.0 * sn * sn - 1.0
         };
         let h = (0.25 * self.big_k).min(0.5);
@@ -400,7 +404,7 @@ impl Elastica {
                 let (a, b) = (self.u1 + self.omega * s_prev, self.u1 + self.omega * s);
                 z += periodic_integral(zprime, a, b, 2.0 * self.big_k, h) / self.omega;
             }
-            let j = jacobi(self.u1 + self.omega * s, self.modulus);
+            let j = fixed.jacobi(self.u1 + self.omega * s);
             let x = -(2.0 / self.omega) * (j1.sn * j1.sn - j.sn * j.sn) / (j.dn + j1.dn);
             out.push(Point2::new(x, z));
             s_prev = s;

@@ -5,7 +5,7 @@ use super::complete::{ellip_e_dd, ellip_k_dd};
 use super::derivatives::{JacobiDm, ellip_k_dm, jacobi_dm_from};
 use super::duplication::MaclaurinHigh;
 use super::epsilon::{epsilon_assemble, epsilon_half_period};
-use super::jacobi::{Jacobi, assemble, jacobi_special, sncndn_half_period};
+use super::jacobi::{Jacobi, assemble, jacobi_special, sncndn_am_half_period};
 use super::landen::{LANDEN_MC, LANDEN_MIN_V, LandenChain};
 use super::period::Period;
 use crate::error::{Error, Result};
@@ -110,7 +110,7 @@ impl FixedModulus {
             return j;
         }
         let red = self.period.reduce(u);
-        let f = sncndn_half_period(red.r.abs(), &self.period, mc, self.kp, |v| self.quarter(v));
+        let f = sncndn_am_half_period(red.r.abs(), &self.period, mc, self.kp, |v| self.quarter(v));
         assemble(&red, f)
     }
 

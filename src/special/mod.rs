@@ -57,7 +57,8 @@
 //!   - for m₁ ≤ 0.1 and v ≥ 1, the ascending Landen (Gauss) transformation
 //!     (DLMF 22.7.4–7): k′ → (1 − k)/(1 + k) = m₁/(1 + k)², so m₁ falls as
 //!     ~m₁²/16 per step, until the first-order expansion about m = 1
-//!     (DLMF 22.10.4–6, one `exp` and one `expm1`) is exact to rounding at
+//!     (DLMF 22.10.4–6, from e^{−v} and e^{−2v} − 1: two `exp`, or `expm1`
+//!     for v < ln 2) is exact to rounding at
 //!     the scaled argument (m₁ e^{2w} ≤ 2⁻²⁴); then back up with
 //!     sn = (1 + k′) s c/d, cn = (d² − k′)/((1 − k′) d),
 //!     dn = (d² + k′)/((1 + k′) d) (one division per step; at most four
@@ -67,14 +68,21 @@
 //!     dn near m₁ ~ 1e-8 and v ~ K/2 (issue 9).
 //!   - otherwise the argument is halved to ≤ 1/8, expanded in Maclaurin
 //!     series (to u¹⁵; [`FixedModulus`] to u²² from ≤ 1/4, its 32
-//!     m-polynomials formed once) and doubled back (at most three steps
-//!     for v < 1),
-//!     carrying 1 − cn and 1 − dn while they are below ½ (Fukushima's
-//!     conditional duplication) and written so that every step adds
-//!     positive terms; for m₁ < 2⁻³⁰ (v < 1) the expansion about m = 1
-//!     replaces the series outright.
+//!     m-polynomials formed once) and doubled back (at most four steps),
+//!     carrying 1 − cn and 1 − dn (Fukushima's conditional duplication;
+//!     on [0, K/2] they stay ≤ 0.51), every step adding positive terms,
+//!     and homogeneously: sn, 1 − cn, 1 − dn are numerators over one
+//!     denominator Q, so the steps need no division until the end; the
+//!     number of halvings comes from the exponent of v, not a loop. For
+//!     m₁ < 2⁻³⁰ (v < 1) the expansion about m = 1 replaces the series
+//!     outright.
 //!
-//!   am = atan2(sn, cn) + jπ, so it is continuous. Descending Landen
+//!   am = jπ + am(r), continuous, with am(r) from the quarter-period
+//!   values by a branch-free atan of a ratio in [0, 1]: 2 atan(sn/(1 + cn))
+//!   on [0, K/2], π/2 − atan(k′ sn s/cn s) at K − s (eight comparisons
+//!   place the ratio next to i/8, then one division and the Taylor series
+//!   of atan to x¹³), so am waits neither for the shift's division and
+//!   square root nor for a branch. Descending Landen
 //!   (AGM) was not used: its cn = cos φ₀ loses all digits near K/2 as
 //!   m → 1. [`FixedModulus`] holds K, E, the reduction constants, the
 //!   series coefficients and the Landen chain for [0, K/2], so that many u
@@ -113,17 +121,17 @@
 //! | E | 0.14 | 0.49 | 0.50 | – | – | – |
 //! | F(φ) | 0.28 | 1.16 | 3.85 | 0.18 | 0.79 | 1.07 |
 //! | E(φ) | 0.23 | 1.17 | 2.76 | 0.12 | 0.66 | 1.38 |
-//! | sn | 0.17 | 261 | 1.5e16 | 0.08 | 0.50 | 1.06 |
-//! | cn | 0.68 | 5.2e13 | 2.4e16 | 0.05 | 0.45 | 1.16 |
-//! | dn | 0.39 | 35 | 144 | 0.05 | 0.47 | 0.89 |
-//! | am | 0.20 | 1.03 | 2.15 | 0.14 | 0.58 | 1.08 |
+//! | sn | 0.17 | 261 | 1.5e16 | 0.08 | 0.50 | 1.02 |
+//! | cn | 0.68 | 5.2e13 | 2.4e16 | 0.05 | 0.46 | 1.25 |
+//! | dn | 0.40 | 35 | 143 | 0.05 | 0.47 | 0.89 |
+//! | am | 0.20 | 1.03 | 1.72 | 0.14 | 0.58 | 0.95 |
 //! | ε | 0.19 | 1.05 | 1.58 | 0.12 | 0.96 | 1.58 |
 //!
-//! [`FixedModulus`] measures the same or better (am 0.95). The m-derivatives (tables by
+//! [`FixedModulus`] measures the same or better (sn 0.83, cn 1.16). The m-derivatives (tables by
 //! `python3 tests/data/gen_special_dm.py`, normalised by their condition
 //! numbers in m and in φ or u): dK/dm ≤ 1.84, dE/dm ≤ 1.71 ulp;
-//! ∂F/∂m ≤ 1.40, ∂E(φ)/∂m ≤ 1.35, ∂sn/∂m ≤ 2.00, ∂cn/∂m ≤ 2.09,
-//! ∂dn/∂m ≤ 1.47, ∂am/∂m ≤ 2.02 ulp norm.
+//! ∂F/∂m ≤ 1.40, ∂E(φ)/∂m ≤ 1.35, ∂sn/∂m ≤ 1.57, ∂cn/∂m ≤ 1.68,
+//! ∂dn/∂m ≤ 1.02, ∂am/∂m ≤ 1.57 ulp norm.
 //!
 //! The huge raw errors are at zeros of sn and cn for large u (u = 2jK
 //! rounded to a double is not a zero) and are what the condition number
@@ -133,19 +141,19 @@
 //! the full tables and what changed.
 //!
 //! # Performance
-//! ns per call on the project's shared 2-core Xeon (x86-64 baseline, no
+//! ns per call on the project's shared 2-core machine (x86-64 baseline, no
 //! FMA), interleaved minimum over 1024 inputs, with `ellip` 1.2.3 in the
-//! same run (load average ~2.5); "extreme" is m₁ = 10^−U(0,15),
-//! φ = π/2 − 10^−U(0,8), u ∈ [0, 100]:
+//! same passes (medians of four runs at load average 6–8); "extreme" is
+//! m₁ = 10^−U(0,15), φ = π/2 − 10^−U(0,8), u ∈ [0, 100]:
 //!
 //! | function | uniform | ellip | extreme | ellip |
 //! |---|---|---|---|---|
-//! | K | 6.8 | 11.6 | 11.9 | 20.7 |
-//! | E | 6.8 | 12.8 | 9.3 | 35.5 |
-//! | F(φ) | 40.7 | 68.9 | 56.7 | 95.7 |
-//! | E(φ) | 57.9 | 105.0 | 74.3 | 131.6 |
-//! | jacobi | 76.9 | – | 100.2 | – |
-//! | [`FixedModulus::jacobi`] (128 u per modulus) | 20.5 | – | 30.5 | – |
+//! | K | 6.9 | 12.0 | 12.0 | 21.0 |
+//! | E | 6.8 | 13.4 | 9.4 | 35.4 |
+//! | F(φ) | 40.8 | 69.1 | 57.3 | 96.1 |
+//! | E(φ) | 58.1 | 105.7 | 75.3 | 131.9 |
+//! | jacobi | 63.7 | – | 78.3 | – |
+//! | [`FixedModulus::jacobi`] (128 u per modulus) | 20.3 | – | 24.9 | – |
 //!
 //! Reproduce with `cargo bench --bench special -- --warm-up-time 1
 //! --measurement-time 2`; criterion's means and the history are in
@@ -164,6 +172,7 @@
 //!   *Precise and fast computation of Jacobian elliptic functions by
 //!   conditional duplication*, Numer. Math. 123 (2013) 585–605.
 
+mod amplitude;
 mod carlson;
 #[rustfmt::skip]
 mod carlson_series;
