@@ -1,0 +1,105 @@
+//! Stability and self-contact along the paper's pull, and what they cost.
+//!
+//! ```text
+//! cargo run --release --example stability [-- --every N] [--segments N] [--slinky]
+//! ```
+//!
+//! Pulls the paper's spring (n = 4, θ0 = 89.8°, A/B = 10, ν = 0.05; with
+//! `--slinky` A/B = 0.1) to F/((2πn)²B) = 3, keeps the equilibrium of every
+//! N-th curve point (default 25), and prints for each: the index carried
+//! along the curve ([`Response::stability`]) and the direct test
+//! ([`Equilibrium::second_variation`]) under both controls, the lowest
+//! eigenvalue, and the closest approach of the shape to itself. Ends with
+//! the time of the pull, of the direct tests and of the contact checks.
+
+use std::error::Error;
+use std::ops::ControlFlow;
+use std::time::{Duration, Instant};
+
+use hockle::Stiffness;
+use hockle::bvp::Solution;
+use hockle::continuation::{Point, PointKind};
+use hockle::rod::Equilibrium;
+use hockle::spring::{Control, RodModel, Spring, Target};
+
+fn main() -> Result<(), Box<dyn Error>> {
+    let mut every = 25usize;
+    let mut segments = hockle::rod::STABILITY_SEGMENTS;
+    let mut spring = Spring::paper();
+    let mut args = std::env::args().skip(1);
+    while let Some(a) = args.next() {
+        match a.as_str() {
+            "--every" => every = args.next().ok_or("--every needs N")?.parse()?,
+            "--segments" => segments = args.next().ok_or("--segments needs N")?.parse()?,
+            "--slinky" => {
+                spring = Spring::from_degrees(4, 89.8, Stiffness::nikolai(0.1, 0.05)?)?;
+            }
+            other => return Err(format!("unknown argument {other}").into()),
+        }
+    }
+    let model = RodModel::default();
+    let rod = RodModel::rod(&spring)?;
+    let mut kept: Vec<(usize, Solution)> = Vec::new();
+    let mut index = 0usize;
+    let clock = Instant::now();
+    let response = model.pull_observed(&spring, Target::Force(3.0), |p: &Point| {
+        if p.kind() != PointKind::Fold {
+            if index.is_multiple_of(every) {
+                kept.push((index, p.solution().clone()));
+            }
+            index += 1;
+        }
+        ControlFlow::Continue(())
+    })?;
+    let pull_time = clock.elapsed();
+    let carried_f = response.stability(Control::Force);
+    let carried_e = response.stability(Control::Extension);
+    let scale = spring.force_scale();
+    println!("{response} in {pull_time:.2?}");
+    println!(
+        "{:>5} {:>9} {:>9} | force: carried direct  λ_min     | extension: carried direct  λ_min     | contact",
+        "point", "Δz", "F/(2πn)²"
+    );
+    let (mut t_stab, mut t_contact) = (Duration::ZERO, Duration::ZERO);
+    let mut disagree = 0;
+    for (i, sol) in &kept {
+        let eq = Equilibrium::new(rod.with_control(Control::Force), sol.clone())?;
+        let t = Instant::now();
+        let f = eq.second_variation(Control::Force, segments)?;
+        let e = eq.second_variation(Control::Extension, segments)?;
+        t_stab += t.elapsed();
+        let t = Instant::now();
+        let contact = eq.closest_approach();
+        t_contact += t.elapsed();
+        let p = response.curve().points()[*i];
+        let mark = if f.stability() != carried_f[*i] || e.stability() != carried_e[*i] {
+            disagree += 1;
+            " ≠"
+        } else {
+            ""
+        };
+        println!(
+            "{i:5} {:9.5} {:9.5} | {:>14} {:>6} {:10.3e} | {:>18} {:>6} {:10.3e} | {}{mark} {:?} res {:.2e}",
+            p.extension,
+            p.force / scale,
+            carried_f[*i].index(),
+            f.stability().index(),
+            f.lowest_eigenvalues()[0], // LOW
+            carried_e[*i].index(),
+            e.stability().index(),
+            e.lowest_eigenvalues()[0],
+            contact.map_or("none".to_string(), |c| format!("{:.3e}", c.distance)),
+            &f.lowest_eigenvalues()[..3],
+            f.residual()
+        );
+    }
+    let k = kept.len().max(1) as u32;
+    println!(
+        "{} sampled points, {disagree} disagreements; pull {pull_time:.2?}; direct test \
+         ({segments} segments) {:.2?} per point and control; contact {:.2?} per point",
+        kept.len(),
+        t_stab / (2 * k),
+        t_contact / k
+    );
+    Ok(())
+}
