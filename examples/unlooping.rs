@@ -6,8 +6,12 @@
 //! ```
 //!
 //! Written on the `spring` scene: the 3D rod answers the spring, the
-//! elastica model gives the branches it visits. Writes `unlooping.csv` (one
-//! row per continuation point, in order) and `unlooping.svg` (the 3D curve,
+//! elastica model gives the branches it visits. Prints the stretches that
+//! are unstable under force and under extension control and the jumps they
+//! cause, and the closest approach of the strip to itself. Writes
+//! `unlooping.csv` (one row per continuation point, in order; columns
+//! `extension,force,force_scaled,arclength,loops,stable_force_control,
+//! stable_extension_control,closest_approach`) and `unlooping.svg` (the 3D curve,
 //! the elastica branches, the folds, the elastica's out-of-plane instability
 //! points ("diamonds", `elastica::OutOfPlane`) on the branches drawn) into DIR (default
 //! `$CARGO_TARGET_DIR/hockle`, else `target/hockle` under the crate).
@@ -21,7 +25,7 @@ use std::time::Instant;
 
 use hockle::continuation::Point;
 use hockle::elastica::{Branch, Diamond, OutOfPlane};
-use hockle::spring::{ElasticaModel, RodModel, Spring, Target};
+use hockle::spring::{Control, Direction, ElasticaModel, RodModel, Spring, Target};
 use hockle::{FoldKind, ForceExtension};
 
 const MAX_FORCE_SCALED: f64 = 3.0;
@@ -51,19 +55,20 @@ fn main() -> Result<(), Box<dyn Error>> {
     eprintln!("pulling the {spring} to F/((2πn)²B) = {MAX_FORCE_SCALED}");
     let start = Instant::now();
     let mut count = 0usize;
-    let response = model.pull_observed(&spring, Target::Force(MAX_FORCE_SCALED), |p: &Point| {
-        count += 1;
-        if count.is_multiple_of(20) {
-            let f = p.parameter() / scale;
-            let done = (f / MAX_FORCE_SCALED).clamp(0.0, 1.0);
-            eprint!(
-                "\r  step {count:5}  F/((2πn)²B) = {f:.4}  [{:<30}] {:.1} s ",
-                "#".repeat((30.0 * done) as usize),
-                start.elapsed().as_secs_f64()
-            );
-        }
-        ControlFlow::Continue(())
-    })?;
+    let response =
+        model.pull_with_contact(&spring, Target::Force(MAX_FORCE_SCALED), |p: &Point| {
+            count += 1;
+            if count.is_multiple_of(20) {
+                let f = p.parameter() / scale;
+                let done = (f / MAX_FORCE_SCALED).clamp(0.0, 1.0);
+                eprint!(
+                    "\r  step {count:5}  F/((2πn)²B) = {f:.4}  [{:<30}] {:.1} s ",
+                    "#".repeat((30.0 * done) as usize),
+                    start.elapsed().as_secs_f64()
+                );
+            }
+            ControlFlow::Continue(())
+        })?;
     let elapsed = start.elapsed();
     eprintln!();
     let scaffold = ElasticaModel::default().scaffold(&spring, MAX_FORCE_SCALED)?;
@@ -118,6 +123,60 @@ fn main() -> Result<(), Box<dyn Error>> {
             d.force_scaled()
         );
     }
+    for control in [Control::Force, Control::Extension] {
+        let labels = response.stability(control);
+        let mut stretches = Vec::new();
+        let mut i = 0;
+        while i < labels.len() {
+            if labels[i].is_stable() {
+                i += 1;
+                continue;
+            }
+            let j = (i..labels.len())
+                .find(|&j| labels[j].is_stable())
+                .unwrap_or(labels.len());
+            let (a, b) = (
+                response.curve().points()[i],
+                response.curve().points()[j - 1],
+            );
+            stretches.push(format!(
+                "Δz {:.4}..{:.4} (F/((2πn)²B) {:.4}..{:.4})",
+                a.extension,
+                b.extension,
+                a.force_scaled(s),
+                b.force_scaled(s)
+            ));
+            i = j;
+        }
+        println!("unstable under {control}: {}", stretches.join(", "));
+        for jump in response.jumps(control) {
+            let dir = match jump.direction {
+                Direction::Loading => "loading",
+                Direction::Unloading => "unloading",
+            };
+            println!(
+                "  {dir} jump: Δz {:.4} → {:.4}, F/((2πn)²B) {:.4} → {:.4}",
+                jump.from.extension,
+                jump.to.extension,
+                jump.from.force_scaled(s),
+                jump.to.force_scaled(s)
+            );
+        }
+    }
+    if let Some((i, d)) = response
+        .closest_approach()
+        .iter()
+        .enumerate()
+        .filter_map(|(i, d)| d.map(|d| (i, d)))
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+    {
+        let p = response.curve().points()[i];
+        println!(
+            "closest approach of the strip to itself: {d:.3e} (rod lengths) at Δz = {:.4}, F/((2πn)²B) = {:.4}",
+            p.extension,
+            p.force_scaled(s)
+        );
+    }
     match response.loops_lost() {
         Some(l) => println!("loops lost: {l}"),
         None => println!("loops lost: not defined (a stretch without a loop count)"),
@@ -133,17 +192,33 @@ fn main() -> Result<(), Box<dyn Error>> {
 
 fn write_csv(response: &hockle::spring::Response, path: &Path) -> std::io::Result<()> {
     let mut f = std::io::BufWriter::new(std::fs::File::create(path)?);
-    writeln!(f, "extension,force,force_scaled,arclength,loops")?;
+    writeln!(
+        f,
+        "extension,force,force_scaled,arclength,loops,stable_force_control,stable_extension_control,closest_approach"
+    )?;
     let scale = response.curve().scale();
-    for (p, l) in response.curve().points().iter().zip(response.loops()) {
+    let force = response.stability(Control::Force);
+    let hard = response.stability(Control::Extension);
+    for (i, (p, l)) in response
+        .curve()
+        .points()
+        .iter()
+        .zip(response.loops())
+        .enumerate()
+    {
         let loops = l.map(|l| l.to_string()).unwrap_or_default();
+        let closest = response.closest_approach()[i]
+            .map(|d| format!("{d:e}"))
+            .unwrap_or_default();
         writeln!(
             f,
-            "{:e},{:e},{:e},{:e},{loops}",
+            "{:e},{:e},{:e},{:e},{loops},{},{},{closest}",
             p.extension,
             p.force,
             p.force_scaled(scale),
-            p.parameter
+            p.parameter,
+            force[i].is_stable(),
+            hard[i].is_stable()
         )?;
     }
     f.flush()

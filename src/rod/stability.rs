@@ -178,10 +178,20 @@ impl Equilibrium {
     /// rods, Lazarus, Miller & Reis (JMPS 2013) for the discretised
     /// stiffness' eigenvalues along a continuation.
     ///
+    /// Before the Hessian is taken the sampled frames are moved, by Newton's
+    /// method at the same F_z, onto the discrete rod's own equilibrium (an
+    /// O(h²) correction; without it the gradient's O(h²) residual would
+    /// pollute the small eigenvalues, [`SecondVariation::residual`]).
+    ///
     /// # Errors
     /// [`Error::InvalidCount`] unless 16 ≤ `segments` ≤ 1000, or if
     /// neighbouring segments turn by more than 2π/3 (too few segments for
-    /// the shape's curvature).
+    /// the shape's curvature); [`Error::NewtonDiverged`],
+    /// [`Error::NewtonNotConverged`] or [`Error::SingularJacobian`] if the
+    /// discrete rod has no equilibrium near this one at this force: at a
+    /// point within the discretisation error of a fold of the force (at 200
+    /// segments, the points next to the paper's folds, within 1e-3 in
+    /// F/((2πn)²B)), where the verdict would be unsure anyway.
     pub fn second_variation(&self, control: Control, segments: usize) -> Result<SecondVariation> {
         if !(16..=MAX_SEGMENTS).contains(&segments) {
             return Err(Error::InvalidCount {
@@ -261,6 +271,10 @@ struct Assembled {
 
 /// Newton iterations of [`Discrete::polish`], at most.
 const POLISH_ITERATIONS: u32 = 10;
+/// Largest rotation increment (radians) of a polish step: the sampled
+/// frames are O(h²) from the discrete equilibrium, so a larger step means
+/// there is none nearby (a fold of the force).
+const POLISH_MAX_STEP: f64 = 0.05;
 /// Rotation increments (radians) at which the polish has converged; the
 /// rounding floor of the dense solve is ~1e-11 at 200 segments.
 const POLISH_TOLERANCE: f64 = 1e-9;
@@ -377,6 +391,12 @@ impl Discrete {
             }
             force.x += step[n];
             force.y += step[n + 1];
+            if moved > POLISH_MAX_STEP {
+                return Err(Error::NewtonDiverged {
+                    iteration: iteration + 1,
+                    correction: moved,
+                });
+            }
             last = moved;
             if moved < POLISH_TOLERANCE {
                 return Ok(());

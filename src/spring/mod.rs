@@ -27,6 +27,7 @@
 //! # Ok::<(), hockle::Error>(())
 //! ```
 
+mod contact;
 mod elastica_model;
 mod helix_model;
 mod response;

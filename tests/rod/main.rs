@@ -9,4 +9,5 @@ mod diamonds;
 mod input;
 mod jacobians;
 mod planar;
+mod stability;
 mod unstressed;

@@ -5,5 +5,6 @@ mod common;
 
 mod bad_input;
 mod cascade;
+mod contact;
 mod models;
 mod scene;
