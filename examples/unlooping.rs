@@ -2,14 +2,16 @@
 //! ν = 0.05) from rest to F/((2πn)²B) = 3 and watch it lose its loops.
 //!
 //! ```text
-//! cargo run --release --example unlooping [-- --out DIR] [--intervals N]
+//! cargo run --release --example unlooping [-- --out DIR] [--intervals N] [--no-contact]
 //! ```
 //!
 //! Written on the `spring` scene: the 3D rod answers the spring, the
 //! elastica model gives the branches it visits. Prints the stretches that
 //! are unstable under force and under extension control and the jumps they
 //! cause, and the closest approach of the strip to itself. Writes
-//! `unlooping.csv` (one row per continuation point, in order; columns
+//! `unlooping.csv` (one row per continuation point, in order; with
+//! `--no-contact` the self-contact check is skipped and its column left
+//! empty; columns
 //! `extension,force,force_scaled,arclength,loops,stable_force_control,
 //! stable_extension_control,closest_approach`) and `unlooping.svg` (the 3D curve,
 //! the elastica branches, the folds, the elastica's out-of-plane instability
@@ -38,6 +40,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         )
         .join("hockle");
     let mut model = RodModel::default();
+    let mut contact = true;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {
@@ -45,6 +48,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             "--intervals" => {
                 model = model.intervals(args.next().ok_or("--intervals needs N")?.parse()?)
             }
+            "--no-contact" => contact = false,
             other => return Err(format!("unknown argument {other}").into()),
         }
     }
@@ -55,20 +59,25 @@ fn main() -> Result<(), Box<dyn Error>> {
     eprintln!("pulling the {spring} to F/((2πn)²B) = {MAX_FORCE_SCALED}");
     let start = Instant::now();
     let mut count = 0usize;
-    let response =
-        model.pull_with_contact(&spring, Target::Force(MAX_FORCE_SCALED), |p: &Point| {
-            count += 1;
-            if count.is_multiple_of(20) {
-                let f = p.parameter() / scale;
-                let done = (f / MAX_FORCE_SCALED).clamp(0.0, 1.0);
-                eprint!(
-                    "\r  step {count:5}  F/((2πn)²B) = {f:.4}  [{:<30}] {:.1} s ",
-                    "#".repeat((30.0 * done) as usize),
-                    start.elapsed().as_secs_f64()
-                );
-            }
-            ControlFlow::Continue(())
-        })?;
+    let progress = |p: &Point| {
+        count += 1;
+        if count.is_multiple_of(20) {
+            let f = p.parameter() / scale;
+            let done = (f / MAX_FORCE_SCALED).clamp(0.0, 1.0);
+            eprint!(
+                "\r  step {count:5}  F/((2πn)²B) = {f:.4}  [{:<30}] {:.1} s ",
+                "#".repeat((30.0 * done) as usize),
+                start.elapsed().as_secs_f64()
+            );
+        }
+        ControlFlow::Continue(())
+    };
+    let target = Target::Force(MAX_FORCE_SCALED);
+    let response = if contact {
+        model.pull_with_contact(&spring, target, progress)?
+    } else {
+        model.pull_observed(&spring, target, progress)?
+    };
     let elapsed = start.elapsed();
     eprintln!();
     let scaffold = ElasticaModel::default().scaffold(&spring, MAX_FORCE_SCALED)?;

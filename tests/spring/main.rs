@@ -8,3 +8,4 @@ mod cascade;
 mod contact;
 mod models;
 mod scene;
+mod stability;
