@@ -18,7 +18,7 @@ impl RodModel {
     /// ([`Spring::with_strip_width`], [`Response::first_contact`]).
     ///
     /// Costs about a millisecond per point on top of the pull
-    /// (docs/PERFORMANCE.md); [`RodModel::pull`] does not pay it.
+    /// (docs/PERFORMANCE.md); [`Model::pull`](super::Model::pull) on the rod does not pay it.
     ///
     /// ```no_run
     /// use hockle::spring::{RodModel, Spring, Target};

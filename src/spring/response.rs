@@ -1,7 +1,7 @@
 //! [`Response`]: a model's answer to "pull this spring", and what can be read
 //! off it: folds, pop-outs, stretches between them, the loop count on each,
-//! the elastica branch each follows, and the jumps (hysteresis) under force
-//! or displacement control.
+//! the elastica branch each follows, the stability of every point and the
+//! jumps (hysteresis) under force or displacement control, and self-contact.
 //!
 //! Everything here is computed from the curve itself, so it means the same
 //! for every model.
@@ -102,7 +102,17 @@ pub struct BranchMatch {
 ///   while the rod's counts, undefined in its 3D excursions, never hide
 ///   one;
 /// - a **stretch** is a piece of the curve between pop-outs, with the most
-///   common known loop count of its points.
+///   common known loop count of its points;
+/// - the **stability** of a point under a [`Control`] is its index, carried
+///   from the rest state through the folds ([`Response::stability`],
+///   [`crate::stability`]): within the model's own degrees of freedom (the
+///   helix's angle; the elastica's plane, whose out-of-plane instabilities
+///   are [`crate::elastica::OutOfPlane`]'s diamonds; the rod's all);
+/// - a **jump** leaves the last stable point a quasi-static test can hold
+///   and lands on a stable point with the same controlled value
+///   ([`Response::jumps`]);
+/// - the **closest approach** of a shape to itself is known where the model
+///   computed shapes and was asked to ([`crate::spring::RodModel::pull_with_contact`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Response {
     model: String,

@@ -177,6 +177,7 @@ fn the_carried_index_agrees_with_the_direct_test_away_from_folds() {
             unstable_seen[c] += usize::from(!direct.is_stable());
         }
     }
+    eprintln!("compared {compared:?}, of them unstable {unstable_seen:?}");
     // The comparison covers the stable and the unstable stretches.
     assert!(compared.iter().all(|&n| n > 50), "{compared:?}");
     assert!(unstable_seen.iter().all(|&n| n >= 3), "{unstable_seen:?}");
