@@ -326,17 +326,39 @@ fn plot(
         legend.push((format!("elastica: {}", c.label()), colour, "line"));
     }
     let scale = response.curve().scale();
-    s += &polyline(
-        &mut response
-            .curve()
-            .points()
-            .iter()
-            .map(|p| (p.extension, p.force_scaled(scale))),
+    // The rod's curve: solid where a dead load can hold it, dashed where it
+    // is unstable under force control (each run shares its end points with
+    // the next, so the pieces join).
+    let labels = response.stability(Control::Force);
+    let pts = response.curve().points();
+    let mut from = 0;
+    while from + 1 < pts.len() {
+        let stable = labels[from + 1].is_stable();
+        let mut to = from + 1;
+        while to + 1 < pts.len() && labels[to + 1].is_stable() == stable {
+            to += 1;
+        }
+        let piece = polyline(
+            &mut pts[from..=to.min(pts.len() - 1)]
+                .iter()
+                .map(|p| (p.extension, p.force_scaled(scale))),
+            "black",
+            2.5,
+        );
+        s += &if stable {
+            piece
+        } else {
+            piece.replace("/>", r#" stroke-dasharray="6 4"/>"#)
+        };
+        s.push('\n');
+        from = to;
+    }
+    legend.push(("3D rod (this run), stable".to_string(), "black", "line"));
+    legend.push((
+        "3D rod, unstable under dead load".to_string(),
         "black",
-        2.5,
-    );
-    s.push('\n');
-    legend.push(("3D rod (this run)".to_string(), "black", "line"));
+        "dashed",
+    ));
     for f in response.folds() {
         let colour = match f.kind {
             FoldKind::MaxForce => "#D55E00",
@@ -376,10 +398,15 @@ fn plot(
     );
     for (i, (label, colour, kind)) in legend.iter().enumerate() {
         let yy = ly + 16.0 + 18.0 * i as f64;
-        if *kind == "line" {
+        if *kind == "line" || *kind == "dashed" {
+            let dash = if *kind == "dashed" {
+                r#" stroke-dasharray="6 4""#
+            } else {
+                ""
+            };
             let _ = write!(
                 s,
-                r#"<line x1="{}" y1="{yy}" x2="{}" y2="{yy}" stroke="{colour}" stroke-width="2.5"/>"#,
+                r#"<line x1="{}" y1="{yy}" x2="{}" y2="{yy}" stroke="{colour}" stroke-width="2.5"{dash}/>"#,
                 lx + 8.0,
                 lx + 32.0
             );
