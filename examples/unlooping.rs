@@ -14,7 +14,7 @@
 //! empty; columns
 //! `extension,force,force_scaled,arclength,loops,stable_force_control,
 //! stable_extension_control,closest_approach`) and `unlooping.svg` (the 3D curve,
-//! the elastica branches, the folds, the elastica's out-of-plane instability
+//! dashed where a dead load cannot hold it, the elastica branches, the folds, the elastica's out-of-plane instability
 //! points ("diamonds", `elastica::OutOfPlane`) on the branches drawn) into DIR (default
 //! `$CARGO_TARGET_DIR/hockle`, else `target/hockle` under the crate).
 
