@@ -80,7 +80,7 @@ use crate::stability::Stability;
 pub const STABILITY_SEGMENTS: usize = 200;
 
 /// Largest segment count of [`Equilibrium::second_variation`] (a dense
-/// eigenproblem of size 3N: about 10 s at the limit).
+/// eigenproblem of size 3N: several seconds at the limit).
 const MAX_SEGMENTS: usize = 1000;
 
 /// The result of the direct stability test of one equilibrium under one
@@ -151,8 +151,9 @@ impl Equilibrium {
     ///
     /// Independent of any continuation history; it checks the index that a
     /// [`crate::spring::Response`] carries along its curve
-    /// ([`crate::stability`]). Cost: a dense symmetric eigenproblem of size
-    /// 600, about 0.1–0.3 s (docs/PERFORMANCE.md); paid only when called.
+    /// ([`crate::stability`]). Cost: a few dense LU solves and a symmetric
+    /// eigenproblem of size 600, about 0.07 s (docs/PERFORMANCE.md); paid
+    /// only when called.
     ///
     /// # Errors
     /// As [`Self::second_variation`].
@@ -190,8 +191,9 @@ impl Equilibrium {
     /// [`Error::NewtonNotConverged`] or [`Error::SingularJacobian`] if the
     /// discrete rod has no equilibrium near this one at this force: at a
     /// point within the discretisation error of a fold of the force (at 200
-    /// segments, the points next to the paper's folds, within 1e-3 in
-    /// F/((2πn)²B)), where the verdict would be unsure anyway.
+    /// segments, the points of the paper's curve next to its folds, within
+    /// 7e-4 of them in the (Δz, F/((2πn)²B)) plane), where the verdict
+    /// would be unsure anyway.
     pub fn second_variation(&self, control: Control, segments: usize) -> Result<SecondVariation> {
         if !(16..=MAX_SEGMENTS).contains(&segments) {
             return Err(Error::InvalidCount {
@@ -239,8 +241,18 @@ impl Equilibrium {
         m += u.transpose() * &u * sigma;
         // symmetrise the rounding of the products
         let m = (&m + m.transpose()) * 0.5;
-        let mut eig: Vec<f64> = m.symmetric_eigenvalues().iter().copied().collect();
-        eig.sort_by(f64::total_cmp);
+        if m.iter().any(|v| !v.is_finite()) {
+            return Err(Error::NonFinite {
+                what: "second variation of the discrete rod",
+                s: f64::NAN,
+            });
+        }
+        let Some(eig) = crate::linalg::symmetric_eigenvalues(m.as_slice(), n) else {
+            return Err(Error::NonFinite {
+                what: "second variation of the discrete rod (eigenvalues did not converge)",
+                s: f64::NAN,
+            });
+        };
         let index = eig.iter().filter(|&&l| l < 0.0).count();
         Ok(SecondVariation {
             control,
@@ -274,7 +286,7 @@ const POLISH_ITERATIONS: u32 = 10;
 /// Largest rotation increment (radians) of a polish step: the sampled
 /// frames are O(h²) from the discrete equilibrium, so a larger step means
 /// there is none nearby (a fold of the force).
-const POLISH_MAX_STEP: f64 = 0.05;
+const POLISH_MAX_STEP: f64 = 0.5;
 /// Rotation increments (radians) at which the polish has converged; the
 /// rounding floor of the dense solve is ~1e-11 at 200 segments.
 const POLISH_TOLERANCE: f64 = 1e-9;
@@ -352,8 +364,8 @@ impl Discrete {
         let n = sys.hess.nrows();
         let mut last = f64::INFINITY;
         for iteration in 0..POLISH_ITERATIONS {
-            let mut k = DMatrix::<f64>::zeros(n + 3, n + 3);
-            let mut rhs = DVector::<f64>::zeros(n + 3);
+            // [K | rhs], column-major, for the crate's dense LU
+            let mut k = DMatrix::<f64>::zeros(n + 3, n + 4);
             k.view_mut((0, 0), (n, n)).copy_from(&sys.hess);
             for r in 0..3 {
                 for j in 0..n {
@@ -361,15 +373,29 @@ impl Discrete {
                     k[(n + r, j)] = -sys.rows[(r, j)];
                 }
             }
-            rhs.rows_mut(0, n).copy_from(&(-&sys.grad));
-            rhs[n] = sys.end.x;
-            rhs[n + 1] = sys.end.y;
-            let Some(step) = k.lu().solve(&rhs) else {
+            for j in 0..n {
+                k[(j, n + 3)] = -sys.grad[j];
+            }
+            k[(n, n + 3)] = sys.end.x;
+            k[(n + 1, n + 3)] = sys.end.y;
+            let (mut perm, mut perm_inv) = (vec![0; n + 3], vec![0; n + 3]);
+            let mut ws = crate::linalg::DenseWorkspace::new(n + 3, 1);
+            if crate::linalg::lu_solve_block(
+                k.as_mut_slice(),
+                n + 3,
+                n + 4,
+                &mut perm,
+                &mut perm_inv,
+                &mut ws,
+            )
+            .is_err()
+            {
                 return Err(Error::SingularJacobian {
                     block: "discrete rod's equilibrium (at a fold of the force)",
                     index: u64::from(iteration),
                 });
-            };
+            }
+            let step = k.column(n + 3).into_owned();
             let dphi = step.rows(0, n);
             let moved = dphi.amax();
             if !moved.is_finite() {

@@ -26,10 +26,10 @@ const EVERY: usize = 12;
 /// the paper's plots, are not compared. Measured (`cargo run --release
 /// --example stability -- --every 2`, 414 samples of the 828 points): the
 /// 200-segment direct test disagrees with the carried index, or finds no
-/// discrete equilibrium at that force, only at the one or two points next to
-/// a fold, all within 3e-4 of it. Why: the discrete rod's folds lie O(h²)
-/// from the collocation's, and next to a fold the eigenvalue that changes
-/// sign there is within that error of zero. 5e-3 leaves a factor > 10.
+/// discrete equilibrium at that force, only at the point next to a fold
+/// (5 of the 414), all within 7e-4 of it. Why: the discrete rod's folds lie
+/// O(h²) from the collocation's, and next to a fold the eigenvalue that
+/// changes sign there is within that error of zero. 5e-3 leaves a factor 7.
 const NEAR_FOLD: f64 = 5e-3;
 
 struct Paper {
