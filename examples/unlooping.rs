@@ -2,13 +2,19 @@
 //! ν = 0.05) from rest to F/((2πn)²B) = 3 and watch it lose its loops.
 //!
 //! ```text
-//! cargo run --release --example unlooping [-- --out DIR] [--intervals N]
+//! cargo run --release --example unlooping [-- --out DIR] [--intervals N] [--no-contact]
 //! ```
 //!
 //! Written on the `spring` scene: the 3D rod answers the spring, the
-//! elastica model gives the branches it visits. Writes `unlooping.csv` (one
-//! row per continuation point, in order) and `unlooping.svg` (the 3D curve,
-//! the elastica branches, the folds, the elastica's out-of-plane instability
+//! elastica model gives the branches it visits. Prints the stretches that
+//! are unstable under force and under extension control and the jumps they
+//! cause, and the closest approach of the strip to itself. Writes
+//! `unlooping.csv` (one row per continuation point, in order; with
+//! `--no-contact` the self-contact check is skipped and its column left
+//! empty; columns
+//! `extension,force,force_scaled,arclength,loops,stable_force_control,
+//! stable_extension_control,closest_approach`) and `unlooping.svg` (the 3D curve,
+//! dashed where a dead load cannot hold it, the elastica branches, the folds, the elastica's out-of-plane instability
 //! points ("diamonds", `elastica::OutOfPlane`) on the branches drawn) into DIR (default
 //! `$CARGO_TARGET_DIR/hockle`, else `target/hockle` under the crate).
 
@@ -21,7 +27,7 @@ use std::time::Instant;
 
 use hockle::continuation::Point;
 use hockle::elastica::{Branch, Diamond, OutOfPlane};
-use hockle::spring::{ElasticaModel, RodModel, Spring, Target};
+use hockle::spring::{Control, Direction, ElasticaModel, RodModel, Spring, Target};
 use hockle::{FoldKind, ForceExtension};
 
 const MAX_FORCE_SCALED: f64 = 3.0;
@@ -34,6 +40,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         )
         .join("hockle");
     let mut model = RodModel::default();
+    let mut contact = true;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {
@@ -41,6 +48,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             "--intervals" => {
                 model = model.intervals(args.next().ok_or("--intervals needs N")?.parse()?)
             }
+            "--no-contact" => contact = false,
             other => return Err(format!("unknown argument {other}").into()),
         }
     }
@@ -51,7 +59,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     eprintln!("pulling the {spring} to F/((2πn)²B) = {MAX_FORCE_SCALED}");
     let start = Instant::now();
     let mut count = 0usize;
-    let response = model.pull_observed(&spring, Target::Force(MAX_FORCE_SCALED), |p: &Point| {
+    let progress = |p: &Point| {
         count += 1;
         if count.is_multiple_of(20) {
             let f = p.parameter() / scale;
@@ -63,7 +71,13 @@ fn main() -> Result<(), Box<dyn Error>> {
             );
         }
         ControlFlow::Continue(())
-    })?;
+    };
+    let target = Target::Force(MAX_FORCE_SCALED);
+    let response = if contact {
+        model.pull_with_contact(&spring, target, progress)?
+    } else {
+        model.pull_observed(&spring, target, progress)?
+    };
     let elapsed = start.elapsed();
     eprintln!();
     let scaffold = ElasticaModel::default().scaffold(&spring, MAX_FORCE_SCALED)?;
@@ -118,6 +132,60 @@ fn main() -> Result<(), Box<dyn Error>> {
             d.force_scaled()
         );
     }
+    for control in [Control::Force, Control::Extension] {
+        let labels = response.stability(control);
+        let mut stretches = Vec::new();
+        let mut i = 0;
+        while i < labels.len() {
+            if labels[i].is_stable() {
+                i += 1;
+                continue;
+            }
+            let j = (i..labels.len())
+                .find(|&j| labels[j].is_stable())
+                .unwrap_or(labels.len());
+            let (a, b) = (
+                response.curve().points()[i],
+                response.curve().points()[j - 1],
+            );
+            stretches.push(format!(
+                "Δz {:.4}..{:.4} (F/((2πn)²B) {:.4}..{:.4})",
+                a.extension,
+                b.extension,
+                a.force_scaled(s),
+                b.force_scaled(s)
+            ));
+            i = j;
+        }
+        println!("unstable under {control}: {}", stretches.join(", "));
+        for jump in response.jumps(control) {
+            let dir = match jump.direction {
+                Direction::Loading => "loading",
+                Direction::Unloading => "unloading",
+            };
+            println!(
+                "  {dir} jump: Δz {:.4} → {:.4}, F/((2πn)²B) {:.4} → {:.4}",
+                jump.from.extension,
+                jump.to.extension,
+                jump.from.force_scaled(s),
+                jump.to.force_scaled(s)
+            );
+        }
+    }
+    if let Some((i, d)) = response
+        .closest_approach()
+        .iter()
+        .enumerate()
+        .filter_map(|(i, d)| d.map(|d| (i, d)))
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+    {
+        let p = response.curve().points()[i];
+        println!(
+            "closest approach of the strip to itself: {d:.3e} (rod lengths) at Δz = {:.4}, F/((2πn)²B) = {:.4}",
+            p.extension,
+            p.force_scaled(s)
+        );
+    }
     match response.loops_lost() {
         Some(l) => println!("loops lost: {l}"),
         None => println!("loops lost: not defined (a stretch without a loop count)"),
@@ -133,17 +201,33 @@ fn main() -> Result<(), Box<dyn Error>> {
 
 fn write_csv(response: &hockle::spring::Response, path: &Path) -> std::io::Result<()> {
     let mut f = std::io::BufWriter::new(std::fs::File::create(path)?);
-    writeln!(f, "extension,force,force_scaled,arclength,loops")?;
+    writeln!(
+        f,
+        "extension,force,force_scaled,arclength,loops,stable_force_control,stable_extension_control,closest_approach"
+    )?;
     let scale = response.curve().scale();
-    for (p, l) in response.curve().points().iter().zip(response.loops()) {
+    let force = response.stability(Control::Force);
+    let hard = response.stability(Control::Extension);
+    for (i, (p, l)) in response
+        .curve()
+        .points()
+        .iter()
+        .zip(response.loops())
+        .enumerate()
+    {
         let loops = l.map(|l| l.to_string()).unwrap_or_default();
+        let closest = response.closest_approach()[i]
+            .map(|d| format!("{d:e}"))
+            .unwrap_or_default();
         writeln!(
             f,
-            "{:e},{:e},{:e},{:e},{loops}",
+            "{:e},{:e},{:e},{:e},{loops},{},{},{closest}",
             p.extension,
             p.force,
             p.force_scaled(scale),
-            p.parameter
+            p.parameter,
+            force[i].is_stable(),
+            hard[i].is_stable()
         )?;
     }
     f.flush()
@@ -242,17 +326,39 @@ fn plot(
         legend.push((format!("elastica: {}", c.label()), colour, "line"));
     }
     let scale = response.curve().scale();
-    s += &polyline(
-        &mut response
-            .curve()
-            .points()
-            .iter()
-            .map(|p| (p.extension, p.force_scaled(scale))),
+    // The rod's curve: solid where a dead load can hold it, dashed where it
+    // is unstable under force control (each run shares its end points with
+    // the next, so the pieces join).
+    let labels = response.stability(Control::Force);
+    let pts = response.curve().points();
+    let mut from = 0;
+    while from + 1 < pts.len() {
+        let stable = labels[from + 1].is_stable();
+        let mut to = from + 1;
+        while to + 1 < pts.len() && labels[to + 1].is_stable() == stable {
+            to += 1;
+        }
+        let piece = polyline(
+            &mut pts[from..=to.min(pts.len() - 1)]
+                .iter()
+                .map(|p| (p.extension, p.force_scaled(scale))),
+            "black",
+            2.5,
+        );
+        s += &if stable {
+            piece
+        } else {
+            piece.replace("/>", r#" stroke-dasharray="6 4"/>"#)
+        };
+        s.push('\n');
+        from = to;
+    }
+    legend.push(("3D rod (this run), stable".to_string(), "black", "line"));
+    legend.push((
+        "3D rod, unstable under dead load".to_string(),
         "black",
-        2.5,
-    );
-    s.push('\n');
-    legend.push(("3D rod (this run)".to_string(), "black", "line"));
+        "dashed",
+    ));
     for f in response.folds() {
         let colour = match f.kind {
             FoldKind::MaxForce => "#D55E00",
@@ -292,10 +398,15 @@ fn plot(
     );
     for (i, (label, colour, kind)) in legend.iter().enumerate() {
         let yy = ly + 16.0 + 18.0 * i as f64;
-        if *kind == "line" {
+        if *kind == "line" || *kind == "dashed" {
+            let dash = if *kind == "dashed" {
+                r#" stroke-dasharray="6 4""#
+            } else {
+                ""
+            };
             let _ = write!(
                 s,
-                r#"<line x1="{}" y1="{yy}" x2="{}" y2="{yy}" stroke="{colour}" stroke-width="2.5"/>"#,
+                r#"<line x1="{}" y1="{yy}" x2="{}" y2="{yy}" stroke="{colour}" stroke-width="2.5"{dash}/>"#,
                 lx + 8.0,
                 lx + 32.0
             );

@@ -19,6 +19,7 @@
 //! | [`rod`] | the 3D anisotropic Kirchhoff rod with zero-moment ends |
 //! | [`spring`] | the scene: one spring, answered by every model with a [`ForceExtension`] |
 //! | [`curve`] | [`ForceExtension`], the one output type of every model |
+//! | [`stability`] | the index of an equilibrium under force or extension control, carried along a curve through its folds |
 //!
 //! ## Main types
 //!
@@ -26,7 +27,8 @@
 //! |---|---|
 //! | [`spring::Spring`] | a spring: coils, helix angle, stiffnesses |
 //! | [`spring::HelixModel`], [`spring::ElasticaModel`], [`spring::RodModel`] | three models of it, cheapest first; each answers [`spring::Model::pull`] |
-//! | [`spring::Response`] | a model's answer: the curve, folds, loop counts, pop-outs, stretches, jumps, the typed termination |
+//! | [`spring::Response`] | a model's answer: the curve, folds, loop counts, stability under either control, pop-outs, stretches, jumps, self-contact, the typed termination |
+//! | [`stability::Stability`] | the index of an equilibrium under one [`Control`] (0: a real spring can sit there) |
 //! | [`Target`], [`Control`], [`ForceScale`], [`Stiffness`] | the load, the force scale (2πn)²B and the stiffnesses A, B, C, defined once for every model |
 //! | [`ForceExtension`] | a force–extension curve, the one output type of every model |
 //! | [`elastica::Elastica`] | one planar equilibrium; [`elastica::Trace`] a whole branch |
@@ -87,6 +89,7 @@ pub mod load;
 pub mod rod;
 pub mod special;
 pub mod spring;
+pub mod stability;
 mod stiffness;
 
 pub(crate) mod linalg;

@@ -237,6 +237,14 @@ pub(crate) fn lu_solve_block(
     Ok(det)
 }
 
+/// The eigenvalues, ascending, of the symmetric column-major `n × n` matrix
+/// `a` (faer's self-adjoint eigensolver, reading the lower triangle);
+/// `None` if it does not converge.
+pub(crate) fn symmetric_eigenvalues(a: &[f64], n: usize) -> Option<Vec<f64>> {
+    let m = faer::MatRef::from_column_major_slice(a, n, n);
+    m.self_adjoint_eigenvalues(faer::Side::Lower).ok()
+}
+
 /// Solves with a [`lu_solve_block`] factorisation for one vector `v`
 /// (`tmp` is scratch of length n).
 pub(crate) fn lu_solve_vec(a: &[f64], n: usize, perm: &[usize], v: &mut [f64], tmp: &mut [f64]) {

@@ -108,7 +108,7 @@ impl Equilibrium {
         Ok(self.eval(s))
     }
 
-    fn eval(&self, s: f64) -> [f64; 13] {
+    pub(super) fn eval(&self, s: f64) -> [f64; 13] {
         let mut y = [0.0; 13];
         self.solution.eval_into(s, &mut y);
         y

@@ -115,11 +115,14 @@
 //! curve with its six folds in 2.0 s of CPU and 7 MB, folds converged to
 //! 6e-7; at θ0 = 90° the planar solutions agree with the elastica to 1e-10.
 
+mod contact;
 mod equilibrium;
+mod jet;
 mod measure;
 mod problem;
 mod pull;
 mod quat;
+mod stability;
 
 use core::f64::consts::{FRAC_PI_2, PI};
 
@@ -130,8 +133,10 @@ use crate::error::{Error, Result};
 use crate::load::Control;
 use crate::stiffness::Stiffness;
 
+pub use contact::Contact;
 pub use equilibrium::Equilibrium;
 pub use pull::{Pull, PullRun, Start};
+pub use stability::{STABILITY_SEGMENTS, SecondVariation};
 
 /// A helical spring of n coils as a 3D anisotropic Kirchhoff rod with
 /// zero-moment ends: the boundary-value problem of the module docs.

@@ -14,8 +14,10 @@
 //! `docs/ACCURACY.md` (section "spring").
 //!
 //! Every model implements [`Model`]; a [`Response`] gives the curve, its folds,
-//! the pop-outs, the stretches between them, their loop counts and the
-//! jumps under force or displacement control.
+//! the pop-outs, the stretches between them, their loop counts, the
+//! stability of every point and the jumps under force or displacement
+//! control; [`RodModel::pull_with_contact`] adds the closest approach of
+//! every shape to itself.
 //!
 //! ```
 //! use hockle::spring::{HelixModel, Model, Spring};
@@ -27,6 +29,7 @@
 //! # Ok::<(), hockle::Error>(())
 //! ```
 
+mod contact;
 mod elastica_model;
 mod helix_model;
 mod response;

@@ -1,7 +1,7 @@
 //! [`Response`]: a model's answer to "pull this spring", and what can be read
 //! off it: folds, pop-outs, stretches between them, the loop count on each,
-//! the elastica branch each follows, and the jumps (hysteresis) under force
-//! or displacement control.
+//! the elastica branch each follows, the stability of every point and the
+//! jumps (hysteresis) under force or displacement control, and self-contact.
 //!
 //! Everything here is computed from the curve itself, so it means the same
 //! for every model.
@@ -12,6 +12,7 @@ use crate::continuation::Termination;
 use crate::curve::{Fold, FoldKind, ForceExtension, ForcePoint};
 use crate::error::{Error, Result};
 use crate::load::{Control, Target};
+use crate::stability::{self, Stability};
 
 /// Loading (the controlled quantity increases) or unloading.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -33,8 +34,9 @@ pub struct PopOut {
     pub min: Fold,
 }
 
-/// A jump of the spring between two equilibria with the same value of the
-/// controlled quantity.
+/// A jump of the spring from the last stable point it can hold to a stable
+/// point with the same value of the controlled quantity (**Breaking**: the
+/// jump now starts at a point, where it used to start at a fold).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Jump {
@@ -42,11 +44,17 @@ pub struct Jump {
     pub control: Control,
     /// Loading or unloading.
     pub direction: Direction,
-    /// The fold the spring leaves.
-    pub from: Fold,
-    /// Where it lands (interpolated on the curve).
+    /// Where the spring leaves the curve: the located fold of the
+    /// controlled quantity where stability is lost at one, else the last
+    /// stable point.
+    pub from: ForcePoint,
+    /// The last stable curve point before it leaves (in the direction of
+    /// travel).
+    pub from_index: usize,
+    /// Where it lands (interpolated on the curve, same controlled value).
     pub to: ForcePoint,
-    /// The index of the first curve point past the landing point.
+    /// The first stable curve point at or past the landing point (in the
+    /// direction of travel).
     pub to_index: usize,
 }
 
@@ -94,7 +102,17 @@ pub struct BranchMatch {
 ///   while the rod's counts, undefined in its 3D excursions, never hide
 ///   one;
 /// - a **stretch** is a piece of the curve between pop-outs, with the most
-///   common known loop count of its points.
+///   common known loop count of its points;
+/// - the **stability** of a point under a [`Control`] is its index, carried
+///   from the rest state through the folds ([`Response::stability`],
+///   [`crate::stability`]): within the model's own degrees of freedom (the
+///   helix's angle; the elastica's plane, whose out-of-plane instabilities
+///   are [`crate::elastica::OutOfPlane`]'s diamonds; the rod's all);
+/// - a **jump** leaves the last stable point a quasi-static test can hold
+///   and lands on a stable point with the same controlled value
+///   ([`Response::jumps`]);
+/// - the **closest approach** of a shape to itself is known where the model
+///   computed shapes and was asked to ([`crate::spring::RodModel::pull_with_contact`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Response {
     model: String,
@@ -102,6 +120,8 @@ pub struct Response {
     curve: ForceExtension,
     folds: Vec<Fold>,
     loops: Vec<Option<u32>>,
+    closest_approach: Vec<Option<f64>>,
+    strip_width: Option<f64>,
     termination: Termination,
     estimated_error: Option<f64>,
 }
@@ -121,12 +141,15 @@ impl Response {
     ) -> Self {
         let folds = curve.folds();
         let loops = vec![None; curve.len()];
+        let closest_approach = vec![None; curve.len()];
         Self {
             model: model.into(),
             target,
             curve,
             folds,
             loops,
+            closest_approach,
+            strip_width: None,
             termination,
             estimated_error: None,
         }
@@ -187,6 +210,64 @@ impl Response {
         }
         self.loops = loops;
         Ok(self)
+    }
+
+    /// The same pull with the closest approach of every shape to itself
+    /// ([`crate::rod::Equilibrium::closest_approach`]), `None` where it was
+    /// not computed, and the width of the strip whose contact
+    /// [`Self::first_contact`] flags (the spring's
+    /// [`Spring::strip_width`](super::Spring::strip_width)).
+    ///
+    /// # Errors
+    /// [`Error::LengthMismatch`] unless there is one value per point;
+    /// [`Error::InvalidArgument`] for a width that is not finite and
+    /// positive.
+    pub fn with_closest_approach(
+        mut self,
+        closest: Vec<Option<f64>>,
+        strip_width: Option<f64>,
+    ) -> Result<Self> {
+        if closest.len() != self.curve.len() {
+            return Err(Error::LengthMismatch {
+                name: "closest approaches",
+                found: closest.len() as u64,
+                expected: self.curve.len() as u64,
+            });
+        }
+        if let Some(w) = strip_width {
+            super::scene::check_strip_width(w)?;
+        }
+        self.closest_approach = closest;
+        self.strip_width = strip_width;
+        Ok(self)
+    }
+
+    /// The closest approach of every point's centreline to itself, between
+    /// parts that are not neighbours along the rod
+    /// ([`crate::rod::Contact`]); `None` where it was not computed (models
+    /// without shapes, or a pull that did not ask for it).
+    #[must_use]
+    pub fn closest_approach(&self) -> &[Option<f64>] {
+        &self.closest_approach
+    }
+
+    /// The strip width the contact check used, if any.
+    #[must_use]
+    pub fn strip_width(&self) -> Option<f64> {
+        self.strip_width
+    }
+
+    /// The first curve point where a strip of the spring's width would touch
+    /// itself: its centreline comes closer to itself than the width (two
+    /// halves of a width apart; conservative, since the strip's edges need
+    /// not face each other). `None` if no computed point does, or without a
+    /// width or closest approaches.
+    #[must_use]
+    pub fn first_contact(&self) -> Option<usize> {
+        let w = self.strip_width?;
+        self.closest_approach
+            .iter()
+            .position(|d| d.is_some_and(|d| d < w))
     }
 
     /// The model that answered.
@@ -300,65 +381,104 @@ impl Response {
         Some(i64::from(first) - i64::from(last))
     }
 
-    /// The jumps a quasi-static test makes under `control`, loading from the
-    /// first point and unloading from the last.
+    /// The index of every curve point under `control`, carried from the
+    /// first point (taken stable: the rest state) through the folds of
+    /// force and extension ([`crate::stability`] explains why that is
+    /// enough, and [`crate::rod::Equilibrium::stability`] is the direct
+    /// test it is checked against).
     ///
-    /// Loading follows the curve until the controlled quantity turns back
-    /// (a fold), then jumps forward to the first later point where the curve
-    /// regains that value; unloading does the same backwards. The difference
-    /// between the two paths is the hysteresis.
+    /// Labels next to a fold are only as sure as the fold's position: a
+    /// point within the fold's location error of it may carry the label of
+    /// the other side.
+    #[must_use]
+    pub fn stability(&self, control: Control) -> Vec<Stability> {
+        stability::carried(&self.curve, &self.folds, &[], control)
+    }
+
+    /// The jumps a quasi-static test makes under `control`, loading from the
+    /// first point and unloading from the last, read off the stability
+    /// labels ([`Self::stability`]).
+    ///
+    /// Loading follows the curve while the next point is stable and the
+    /// controlled quantity does not fall; the spring then leaves (at the
+    /// fold where stability is lost at one) and lands at the first later
+    /// stable point that regains the value it left at. Unloading does the
+    /// same backwards from the last stable point. A spring that finds no
+    /// stable landing on the computed curve ends its path there. The
+    /// difference between the two paths is the hysteresis.
     #[must_use]
     pub fn jumps(&self, control: Control) -> Vec<Jump> {
+        let labels = self.stability(control);
         let pts = self.curve.points();
+        let n = pts.len();
         let value = |p: &ForcePoint| match control {
             Control::Force => p.force,
             Control::Extension => p.extension,
         };
+        let stable = |i: usize| labels[i].is_stable();
         let (max_kind, min_kind) = match control {
             Control::Force => (FoldKind::MaxForce, FoldKind::MinForce),
             Control::Extension => (FoldKind::MaxExtension, FoldKind::MinExtension),
         };
+        let fold_after = |i: usize, kind: FoldKind| {
+            self.folds
+                .iter()
+                .find(|f| f.index == i && f.kind == kind)
+                .map(|f| f.point)
+        };
         let mut jumps = Vec::new();
 
-        let mut reached = 0;
-        for fold in self.folds.iter().filter(|f| f.kind == max_kind) {
-            if fold.index < reached {
-                continue;
+        let Some(mut i) = (0..n).find(|&i| stable(i)) else {
+            return jumps;
+        };
+        loop {
+            while i + 1 < n && stable(i + 1) && value(&pts[i + 1]) >= value(&pts[i]) {
+                i += 1;
             }
-            let level = value(&fold.point);
-            let landing = (fold.index + 1..pts.len())
-                .find(|&j| value(&pts[j - 1]) < level && value(&pts[j]) >= level);
-            if let Some(j) = landing {
-                jumps.push(Jump {
-                    control,
-                    direction: Direction::Loading,
-                    from: *fold,
-                    to: interpolate(&pts[j - 1], &pts[j], level, value),
-                    to_index: j,
-                });
-                reached = j;
+            if i + 1 >= n {
+                break;
             }
+            let from = fold_after(i, max_kind).unwrap_or(pts[i]);
+            let level = value(&from);
+            let landing = (i + 2..n)
+                .find(|&j| stable(j) && value(&pts[j - 1]) < level && value(&pts[j]) >= level);
+            let Some(j) = landing else { break };
+            jumps.push(Jump {
+                control,
+                direction: Direction::Loading,
+                from,
+                from_index: i,
+                to: interpolate(&pts[j - 1], &pts[j], level, value),
+                to_index: j,
+            });
+            i = j;
         }
 
-        let mut reached = pts.len();
-        for fold in self.folds.iter().rev().filter(|f| f.kind == min_kind) {
-            if fold.index > reached {
-                continue;
+        let Some(mut i) = (0..n).rev().find(|&i| stable(i)) else {
+            return jumps;
+        };
+        loop {
+            while i > 0 && stable(i - 1) && value(&pts[i - 1]) <= value(&pts[i]) {
+                i -= 1;
             }
-            let level = value(&fold.point);
-            let landing = (1..fold.index.min(pts.len()))
+            if i == 0 {
+                break;
+            }
+            let from = fold_after(i - 1, min_kind).unwrap_or(pts[i]);
+            let level = value(&from);
+            let landing = (1..i.saturating_sub(1))
                 .rev()
-                .find(|&j| value(&pts[j]) > level && value(&pts[j - 1]) <= level);
-            if let Some(j) = landing {
-                jumps.push(Jump {
-                    control,
-                    direction: Direction::Unloading,
-                    from: *fold,
-                    to: interpolate(&pts[j - 1], &pts[j], level, value),
-                    to_index: j - 1,
-                });
-                reached = j - 1;
-            }
+                .find(|&j| stable(j - 1) && value(&pts[j]) > level && value(&pts[j - 1]) <= level);
+            let Some(j) = landing else { break };
+            jumps.push(Jump {
+                control,
+                direction: Direction::Unloading,
+                from,
+                from_index: i,
+                to: interpolate(&pts[j - 1], &pts[j], level, value),
+                to_index: j - 1,
+            });
+            i = j - 1;
         }
         jumps
     }

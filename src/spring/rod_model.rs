@@ -119,11 +119,18 @@ impl Model for RodModel {
 
     /// A run that stops before the target (Newton failure at the smallest
     /// step, step limit) still answers, with every point it computed and
-    /// [`Response::termination`] saying why.
+    /// [`Response::termination`] saying why. A spring with a strip width
+    /// ([`Spring::with_strip_width`]) gets the closest approach of every
+    /// shape and its first contact ([`RodModel::pull_with_contact`]).
     ///
     /// # Errors
     /// As [`RodModel::pull_observed`].
     fn pull_to(&self, spring: &Spring, target: Target) -> Result<Response> {
-        self.pull_observed(spring, target, ())
+        // a spring with a strip width asks where the strip first touches
+        if spring.strip_width().is_some() {
+            self.pull_with_contact(spring, target, ())
+        } else {
+            self.pull_observed(spring, target, ())
+        }
     }
 }

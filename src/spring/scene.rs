@@ -37,6 +37,7 @@ pub struct Spring {
     helix_angle: f64,
     stiffness: Stiffness,
     intrinsic: Vector3<f64>,
+    strip_width: Option<f64>,
 }
 
 /// The serialized form of [`Spring`], validated by its constructors on
@@ -48,6 +49,8 @@ struct SpringParts {
     helix_angle: f64,
     stiffness: Stiffness,
     intrinsic_strains: [f64; 3],
+    #[serde(default)]
+    strip_width: Option<f64>,
 }
 
 #[cfg(feature = "serde")]
@@ -58,6 +61,7 @@ impl From<Spring> for SpringParts {
             helix_angle: s.helix_angle,
             stiffness: s.stiffness,
             intrinsic_strains: s.intrinsic.into(),
+            strip_width: s.strip_width,
         }
     }
 }
@@ -66,8 +70,12 @@ impl From<Spring> for SpringParts {
 impl TryFrom<SpringParts> for Spring {
     type Error = Error;
     fn try_from(p: SpringParts) -> Result<Self> {
-        Spring::new(p.coils, p.helix_angle, p.stiffness)?
-            .with_intrinsic_strains(Vector3::from(p.intrinsic_strains))
+        let spring = Spring::new(p.coils, p.helix_angle, p.stiffness)?
+            .with_intrinsic_strains(Vector3::from(p.intrinsic_strains))?;
+        match p.strip_width {
+            Some(w) => spring.with_strip_width(w),
+            None => Ok(spring),
+        }
     }
 }
 
@@ -94,6 +102,7 @@ impl Spring {
             helix_angle,
             stiffness,
             intrinsic,
+            strip_width: None,
         })
     }
 
@@ -134,6 +143,26 @@ impl Spring {
         }
         self.intrinsic = strains;
         Ok(self)
+    }
+
+    /// The same spring as a strip of `width` (in units of the rod's length,
+    /// like every length here), so that a pull that computes shapes flags
+    /// the first point where the strip would touch itself
+    /// ([`Response::first_contact`](super::Response::first_contact)). The
+    /// rod model itself knows no width: the paper's "narrow strip".
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] unless the width is finite and positive.
+    pub fn with_strip_width(mut self, width: f64) -> Result<Self> {
+        check_strip_width(width)?;
+        self.strip_width = Some(width);
+        Ok(self)
+    }
+
+    /// The strip width, if given ([`Spring::with_strip_width`]).
+    #[must_use]
+    pub fn strip_width(&self) -> Option<f64> {
+        self.strip_width
     }
 
     /// The number of coils n of the unstressed helix.
@@ -184,6 +213,19 @@ impl Spring {
     #[must_use]
     pub fn force_scale(&self) -> f64 {
         self.scale().value()
+    }
+}
+
+/// A strip width: finite and positive.
+pub(crate) fn check_strip_width(width: f64) -> Result<f64> {
+    if width.is_finite() && width > 0.0 {
+        Ok(width)
+    } else {
+        Err(Error::InvalidArgument {
+            name: "strip width",
+            value: width,
+            allowed: "a finite, positive width (in units of the rod's length)",
+        })
     }
 }
 

@@ -224,4 +224,43 @@ fn rod_and_spring_types_are_send_and_sync() {
     check::<hockle::ForceExtension>();
     check::<hockle::Stiffness>();
     check::<hockle::Error>();
+    check::<hockle::stability::Stability>();
+    check::<hockle::stability::IndexCrossing>();
+    check::<hockle::rod::SecondVariation>();
+    check::<hockle::rod::Contact>();
+}
+
+#[test]
+fn the_direct_stability_test_rejects_bad_segment_counts() {
+    let rod = paper();
+    let start = Pull::new(rod, Target::Force(1.0)).start().unwrap();
+    let rest = hockle::rod::Equilibrium::new(rod, start.rest().clone()).unwrap();
+    for segments in [0, 15, 1001, usize::MAX] {
+        assert!(matches!(
+            rest.second_variation(hockle::Control::Force, segments),
+            Err(Error::InvalidCount {
+                name: "segments",
+                ..
+            })
+        ));
+    }
+    // 16 segments are allowed: four coils turn neighbouring frames by
+    // 2π·4/16 = π/2 < 2π/3, so it answers; seven coils turn them by
+    // 2π·7/16 > 2π/3, too few segments for the shape, a typed error.
+    assert!(rest.second_variation(hockle::Control::Force, 16).is_ok());
+    let tight = Rod::new(
+        7,
+        89.8_f64.to_radians(),
+        Stiffness::nikolai(10.0, 0.05).unwrap(),
+    )
+    .unwrap();
+    let start = Pull::new(tight, Target::Force(1.0)).start().unwrap();
+    let rest = hockle::rod::Equilibrium::new(tight, start.rest().clone()).unwrap();
+    assert!(matches!(
+        rest.second_variation(hockle::Control::Extension, 16),
+        Err(Error::InvalidCount {
+            name: "segments",
+            ..
+        })
+    ));
 }

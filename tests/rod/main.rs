@@ -9,5 +9,6 @@ mod diamonds;
 mod input;
 mod jacobians;
 mod planar;
+mod stability;
 mod tolerance;
 mod unstressed;

@@ -38,6 +38,11 @@ fn inconsistent_or_out_of_range_parts_are_rejected() {
     let zero_coils = spring.replacen("\"coils\":4", "\"coils\":0", 1);
     assert_ne!(spring, zero_coils);
     assert!(serde_json::from_str::<Spring>(&zero_coils).is_err());
+    // a strip width is validated on the way in too
+    let strip = serde_json::to_string(&Spring::paper().with_strip_width(1e-3).unwrap()).unwrap();
+    let negative = strip.replacen("0.001", "-0.001", 1);
+    assert_ne!(strip, negative);
+    assert!(serde_json::from_str::<Spring>(&negative).is_err());
 }
 
 #[test]
@@ -46,6 +51,10 @@ fn results_round_trip() {
     assert_eq!(round_trip(&e), e);
     let spring = Spring::paper();
     assert_eq!(round_trip(&spring), spring);
+    let strip = spring.with_strip_width(1e-3).unwrap();
+    assert_eq!(round_trip(&strip), strip);
+    let labels = response_labels();
+    assert_eq!(round_trip(&labels), labels);
     // A response's curve and folds serialize; its termination carries the
     // typed error of a failed run, which is not data.
     let response = HelixModel::default().pull(&spring, 0.5).unwrap();
@@ -53,4 +62,11 @@ fn results_round_trip() {
     assert_eq!(round_trip(&response.folds().to_vec()), response.folds());
     let target = hockle::Target::Extension(0.5);
     assert_eq!(round_trip(&target), target);
+}
+
+fn response_labels() -> Vec<hockle::stability::Stability> {
+    HelixModel::default()
+        .pull(&Spring::paper(), 3.0)
+        .unwrap()
+        .stability(hockle::Control::Force)
 }

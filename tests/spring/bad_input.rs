@@ -70,3 +70,39 @@ fn models_that_assume_helical_strains_refuse_others() {
         ));
     }
 }
+
+#[test]
+fn strip_widths_must_be_finite_and_positive() {
+    for w in [0.0, -1e-3, f64::NAN, f64::INFINITY] {
+        assert!(matches!(
+            Spring::paper().with_strip_width(w),
+            Err(Error::InvalidArgument {
+                name: "strip width",
+                ..
+            })
+        ));
+    }
+    assert_eq!(
+        Spring::paper()
+            .with_strip_width(1e-3)
+            .unwrap()
+            .strip_width(),
+        Some(1e-3)
+    );
+    // A response takes one closest approach per point and a valid width.
+    let pull = HelixModel::default().pull(&Spring::paper(), 0.5).unwrap();
+    let n = pull.curve().len();
+    assert!(matches!(
+        pull.clone().with_closest_approach(vec![None; n + 1], None),
+        Err(Error::LengthMismatch { .. })
+    ));
+    assert!(matches!(
+        pull.clone()
+            .with_closest_approach(vec![Some(1.0); n], Some(-1.0)),
+        Err(Error::InvalidArgument { .. })
+    ));
+    let flagged = pull
+        .with_closest_approach(vec![Some(1.0); n], Some(2.0))
+        .unwrap();
+    assert_eq!(flagged.first_contact(), Some(0));
+}

@@ -45,15 +45,12 @@ fn the_paper_spring_sheds_three_loops_onto_the_secondary_upsilon_branches() {
     assert_eq!(loading.len(), 3, "{jumps:?}");
     assert!(!unloading.is_empty(), "{jumps:?}");
     for down in &unloading {
-        assert!(down.to.extension < down.from.point.extension);
+        assert!(down.to.extension < down.from.extension);
         let up = loading
             .iter()
-            .filter(|up| up.to.extension >= down.from.point.extension);
+            .filter(|up| up.to.extension >= down.from.extension);
         for up in up {
-            assert!(
-                down.from.point.force < up.from.point.force,
-                "{down:?} vs {up:?}"
-            );
+            assert!(down.from.force < up.from.force, "{down:?} vs {up:?}");
         }
     }
 }

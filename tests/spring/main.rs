@@ -5,5 +5,7 @@ mod common;
 
 mod bad_input;
 mod cascade;
+mod contact;
 mod models;
 mod scene;
+mod stability;
