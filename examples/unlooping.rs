@@ -2,7 +2,7 @@
 //! ν = 0.05) from rest to F/((2πn)²B) = 3 and watch it lose its loops.
 //!
 //! ```text
-//! cargo run --release --example unlooping [-- --out DIR] [--intervals N] [--no-contact]
+//! cargo run --release --example unlooping [-- --out DIR] [--tolerance TOL] [--intervals N] [--no-contact]
 //! ```
 //!
 //! Written on the `spring` scene: the 3D rod answers the spring, the
@@ -48,6 +48,9 @@ fn main() -> Result<(), Box<dyn Error>> {
             "--intervals" => {
                 model = model.intervals(args.next().ok_or("--intervals needs N")?.parse()?)
             }
+            "--tolerance" => {
+                model = model.tolerance(args.next().ok_or("--tolerance needs TOL")?.parse()?)
+            }
             "--no-contact" => contact = false,
             other => return Err(format!("unknown argument {other}").into()),
         }
@@ -91,6 +94,9 @@ fn main() -> Result<(), Box<dyn Error>> {
         .collect();
 
     println!("{response} in {elapsed:.2?}");
+    if let Some(e) = response.estimated_error() {
+        println!("estimated error of the curve and its folds in (Δz, F/((2πn)²B)): {e:.1e}");
+    }
     let s = spring.scale();
     println!("pop-outs (maximum-force fold → minimum-force fold):");
     for (i, p) in response.pop_outs().iter().enumerate() {

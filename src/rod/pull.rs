@@ -20,14 +20,23 @@
 //! step Δs equal to the distance, in this norm, to the equilibrium a load
 //! δ = min(1e-4, |target|/2) away (F/((2πn)²B) = ±δ, or Δz ± δ): small
 //! enough not to jump over the helix's initial turn-and-shear stretch at
-//! almost constant force, and never past the target. Step control, tangents
-//! and fold location (Illinois iteration on the arclength of the step, to
-//! 1e-9) are [`crate::continuation`]'s, with the angle check between
-//! successive tangents (0.3 rad) that keeps the trace from jumping between
-//! nearby branches; branch-point detection is off (the rod's phase
-//! condition keeps the pull free of them, as the `rod` tests check with it
-//! on), which lets the corrector keep its factorisation. The target is a
-//! stop of the continuation: the last point is located on it.
+//! almost constant force, and never past the target.
+//!
+//! The accuracy is a [`Pull::tolerance`] (default 1e-6) in the plane
+//! (Δz, F/((2πn)²B)) of the paper's plots, handed to the continuation
+//! ([`Continuation::tolerance`], with that plane as its diagram): it sets
+//! the collocation degree m (4 down to 1e-4, 5 down to 1e-7, 6 down to
+//! 1e-9, 7 below), the first mesh (n·1.45·tol^(−1/2m) intervals, at least
+//! 3 per coil, calibrated on the paper's spring), and through the
+//! continuation the mesh during the run (points checked against the
+//! halved mesh, remeshed by equidistribution), the steps (Hermite
+//! interpolation error, the tangent's angle, at most 0.4 rad, and its turn
+//! in the plane, the corrector's drift), the Newton and the location
+//! tolerances. What the run achieved is [`PullRun::estimate`]. Branch-point
+//! detection is off (the rod's phase condition keeps the pull free of
+//! them, as the `rod` tests check with it on), which lets the corrector
+//! keep its factorisation. The target is a stop of the continuation: the
+//! last point is located on it.
 
 use std::time::{Duration, Instant};
 
