@@ -296,6 +296,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         let flipped = tangent.p[q] * old_t.p[q] < 0.0;
         self.t0 = tangent;
         self.x0 = corrected;
+        self.previous = None;
         self.det0 = det;
         self.factored_at_x0 = true;
         self.halved = None;

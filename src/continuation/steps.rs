@@ -53,6 +53,9 @@ pub struct Steps<'a, P: Problem + ?Sized> {
     pub(super) last_third: Option<([f64; 2], f64)>,
     /// Remeshes spent on the current step.
     pub(super) remeshes_this_step: u32,
+    /// The point and tangent before x₀ and the step between them (the
+    /// cubic predictor's data; none at the start and after a remesh).
+    pub(super) previous: Option<(State, State, f64)>,
     /// The coarsest mesh the run may move to: the start solution's.
     pub(super) min_intervals: usize,
     /// A remesh moved x₀ past a fold: locate it before the next step.
@@ -187,6 +190,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             checked_density: f64::NAN,
             last_third: None,
             remeshes_this_step: 0,
+            previous: None,
             min_intervals: mesh_intervals,
             fold_behind: false,
             checked_at: 0,
@@ -442,8 +446,11 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         // Accept: the new point becomes x₀; its factorisation is current
         // unless location overwrote it.
         let its = c.iterations;
-        self.x0 = c.x;
-        self.t0 = c.tangent;
+        let (x_old, t_old) = (
+            std::mem::replace(&mut self.x0, c.x),
+            std::mem::replace(&mut self.t0, c.tangent),
+        );
+        self.previous = Some((x_old, t_old, ds));
         self.det0 = c.det;
         self.skip_detection = false;
         self.events0 = in_step.events;
