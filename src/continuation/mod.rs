@@ -83,6 +83,7 @@ mod switch;
 mod termination;
 
 pub use fold_curve::{FoldContinuation, FoldCurve, FoldObserver, FoldPoint, FoldPointKind};
+pub use fold_extended::Extended as FoldProblem;
 pub use observer::{Every, Observer};
 pub use point::{Point, PointKind};
 pub use run::Run;

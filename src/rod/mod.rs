@@ -115,8 +115,11 @@
 //! curve with its six folds in 2.0 s of CPU and 7 MB, folds converged to
 //! 6e-7; at θ0 = 90° the planar solutions agree with the elastica to 1e-10.
 
+pub mod cascade;
 mod equilibrium;
 mod measure;
+mod nikolai;
+mod phase_diagram;
 mod problem;
 mod pull;
 mod quat;
@@ -130,7 +133,10 @@ use crate::error::{Error, Result};
 use crate::load::Control;
 use crate::stiffness::Stiffness;
 
+pub use cascade::{CuspSearch, Followed};
 pub use equilibrium::Equilibrium;
+pub use nikolai::NikolaiRod;
+pub use phase_diagram::{CuspAt, CuspLine, Fixed, PhaseDiagram};
 pub use pull::{Pull, PullRun, Start};
 
 /// A helical spring of n coils as a 3D anisotropic Kirchhoff rod with

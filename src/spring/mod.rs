@@ -32,6 +32,7 @@ mod helix_model;
 mod response;
 mod rod_model;
 mod scene;
+mod sweep;
 
 pub use crate::load::{Control, Target};
 pub use elastica_model::ElasticaModel;
@@ -39,6 +40,7 @@ pub use helix_model::HelixModel;
 pub use response::{BranchMatch, Direction, Jump, PopOut, Response, Stretch};
 pub use rod_model::RodModel;
 pub use scene::Spring;
+pub use sweep::{sweep, sweep_serial};
 
 use crate::error::{Error, Result};
 

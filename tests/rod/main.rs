@@ -8,5 +8,6 @@ mod cascade;
 mod diamonds;
 mod input;
 mod jacobians;
+mod phase_diagram;
 mod planar;
 mod unstressed;

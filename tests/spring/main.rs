@@ -7,3 +7,4 @@ mod bad_input;
 mod cascade;
 mod models;
 mod scene;
+mod sweep;
