@@ -138,10 +138,16 @@ fn direct_pulls_see_the_pop_outs_the_diagram_predicts() {
     }
 }
 
-/// Scenes with 3, 2, 1 and 0 pop-outs (set from the diagram, see the test).
-const SCENES: [(f64, f64, f64); 4] = [
+/// Scenes with 3, 2, 1 and 0 pop-outs on the line at ν = 0.05 and
+/// A/B = 10, then off it: a stiff twist (ν = −0.6: 3 pop-outs at 77°), near
+/// the tip of the third pop-out (A/B = 3: 1), and A/B = 20, ν = 0.2 (1).
+/// The counts are the diagram's; the pulls decide.
+const SCENES: [(f64, f64, f64); 7] = [
     (89.8, 10.0, 0.05),
     (87.35, 10.0, 0.05),
     (86.9, 10.0, 0.05),
     (86.0, 10.0, 0.05),
+    (77.0, 10.0, -0.6),
+    (89.5, 3.0, 0.05),
+    (88.0, 20.0, 0.2),
 ];
