@@ -15,7 +15,24 @@
 //!
 //! [`CuspSearch::follow`] continues a fold to a requested value of one
 //! parameter and reports the first cusp met on the way;
-//! [`CuspSearch::pop_outs`] pulls a spring and pairs its folds.
+//! [`CuspSearch::pop_outs`] pulls a spring and pairs its folds;
+//! [`CuspSearch::cusp_curve`] traces the curve of cusps in a third
+//! parameter (`examples/phase_diagram`).
+//!
+//! ```no_run
+//! use hockle::rod::{CuspSearch, Followed, NikolaiRod, Rod};
+//! use hockle::Stiffness;
+//! // The paper's spring: where does its first pop-out vanish as θ0 falls?
+//! let rod = Rod::new(4, 89.8_f64.to_radians(), Stiffness::nikolai(10.0, 0.05)?)?;
+//! let family = NikolaiRod::new(rod, 0.05)?;
+//! let search = CuspSearch::new().intervals(24);
+//! let pops = search.pop_outs(&family, 3.0)?; // three pairs (max, min)
+//! let Followed::Cusp(cusp) = search.follow(&family, &pops[0][0], Rod::THETA0, 1.0)? else {
+//!     panic!("a cusp above θ0 = 1 rad");
+//! };
+//! assert!((cusp.parameter().to_degrees() - 87.4854).abs() < 1e-3); // docs/ACCURACY.md
+//! # Ok::<(), hockle::Error>(())
+//! ```
 
 use std::ops::ControlFlow;
 

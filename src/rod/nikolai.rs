@@ -46,6 +46,8 @@ use crate::stiffness::Stiffness;
 pub struct NikolaiRod {
     rod: Rod,
     nu: f64,
+    /// ln(A/B) of `rod`.
+    ln_ratio: f64,
 }
 
 impl NikolaiRod {
@@ -74,7 +76,11 @@ impl NikolaiRod {
                 allowed: "the Nikolai value 2AB/((1 + ν)(A + B)) of the rod's A, B and this ν",
             });
         }
-        Ok(Self { rod, nu })
+        Ok(Self {
+            rod,
+            nu,
+            ln_ratio: (s.a() / s.b()).ln(),
+        })
     }
 
     /// The rod this family was built from.
@@ -95,7 +101,8 @@ impl NikolaiRod {
     pub fn parameters(&self, rod_parameters: &[f64; 3]) -> [f64; 5] {
         let s = self.rod.stiffness();
         let [l, dz, t] = *rod_parameters;
-        [l / self.scale(), dz, t, (s.a() / s.b()).ln(), self.nu]
+        let _ = s;
+        [l / self.scale(), dz, t, self.ln_ratio, self.nu]
     }
 
     /// (2πn)²B.
@@ -113,6 +120,10 @@ impl NikolaiRod {
     /// positive at `p` give the family's own.
     #[must_use]
     pub fn rod_at(&self, p: &[f64]) -> Rod {
+        if p[Self::LN_A_OVER_B] == self.ln_ratio && p[Self::NU] == self.nu {
+            // the family's own stiffnesses, without exp(ln(A/B))'s rounding
+            return self.rod;
+        }
         let b = self.rod.b;
         let (a, c) = stiffness_at(b, p[Self::LN_A_OVER_B].exp(), p[Self::NU]);
         if a.is_finite() && c.is_finite() && a > 0.0 && c > 0.0 {

@@ -19,10 +19,11 @@ use crate::load::Target;
 ///
 /// ```
 /// use hockle::spring::{sweep, HelixModel, Spring, Target};
-/// let scenes: Vec<_> = [60.0, 80.0, 89.0]
-///     .into_iter()
-///     .map(|t| (Spring::from_degrees(4, t, hockle::Stiffness::nikolai(10.0, 0.05)?)?, Target::Force(0.5)))
-///     .collect::<Result<_, hockle::Error>>()?;
+/// let mut scenes = Vec::new();
+/// for theta0 in [60.0, 80.0, 89.0] {
+///     let spring = Spring::from_degrees(4, theta0, hockle::Stiffness::nikolai(10.0, 0.05)?)?;
+///     scenes.push((spring, Target::Force(0.5)));
+/// }
 /// let answers = sweep(&HelixModel::default(), &scenes, |done, total| eprintln!("{done}/{total}"));
 /// assert_eq!(answers.len(), 3);
 /// assert!(answers.iter().all(|a| a.is_ok()));
