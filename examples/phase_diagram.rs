@@ -9,7 +9,8 @@
 //! ```
 //!
 //! Without `--compute`, n = 4 is read from the committed diagram
-//! `docs/data/phase_diagram_n4.csv` (what `--compute` writes); other n are
+//! `docs/data/phase_diagram_n4.csv` (what `--compute` writes), other n from
+//! `docs/data/phase_diagram_n<N>.csv` where committed (n = 2, 3), else
 //! computed. `--compute` pulls the paper's spring at θ0 = 89.8°, A/B = 10,
 //! ν = 0.05 (n coils), continues each pop-out's maximum-force fold down in
 //! θ0 to its cusp, and from there traces the curve of cusps in A/B (at
@@ -361,8 +362,13 @@ fn main() -> Result<(), Box<dyn Error + Send + Sync>> {
         check(a > 0.0 && a.is_finite(), "A/B must be finite and positive")?;
         check(nu > -1.0 && nu < 0.5, "ν must be in (−1, 0.5)")?;
     }
+    let committed = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("docs/data")
+        .join(format!("phase_diagram_n{coils}.csv"));
     let diagram = if coils == 4 && !force {
         PhaseDiagram::from_csv(4, N4)?
+    } else if let (false, Ok(csv)) = (force, std::fs::read_to_string(&committed)) {
+        PhaseDiagram::from_csv(coils, &csv)?
     } else {
         let d = compute(coils)?;
         std::fs::create_dir_all(&out)?;
