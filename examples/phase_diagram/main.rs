@@ -10,7 +10,7 @@
 //!
 //! Without `--compute`, n = 4 is read from the committed diagram
 //! `docs/data/phase_diagram_n4.csv` (what `--compute` writes), other n from
-//! `docs/data/phase_diagram_n<N>.csv` where committed (n = 2, 3), else
+//! `docs/data/phase_diagram_n<N>.csv` where committed (n = 2, 3, 6), else
 //! computed. `--compute` pulls the paper's spring at θ0 = 89.8°, A/B = 10,
 //! ν = 0.05 (n coils), continues each pop-out's maximum-force fold down in
 //! θ0 to its cusp, and from there traces the curve of cusps in A/B (at

@@ -7,8 +7,27 @@ use std::fmt::Write as _;
 use hockle::rod::{Fixed, PhaseDiagram};
 
 /// Okabe–Ito: fills for 0, 1, 2, 3, … pop-outs and line colours.
-const FILL: [&str; 5] = ["#ffffff", "#F0E442", "#56B4E9", "#009E73", "#CC79A7"];
+/// Okabe–Ito fills for 1–4 pop-outs, then greys; beyond four pop-outs the
+/// lines repeat dashed.
+const FILL: [&str; 8] = [
+    "#ffffff", "#F0E442", "#56B4E9", "#009E73", "#CC79A7", "#bbbbbb", "#888888", "#555555",
+];
 const LINE: [&str; 4] = ["#E69F00", "#0072B2", "#D55E00", "#000000"];
+
+/// Fill of k pop-outs: white for none, then the four colours in turn.
+fn fill(k: usize) -> &'static str {
+    if k == 0 {
+        FILL[0]
+    } else {
+        FILL[1 + (k - 1) % (FILL.len() - 1)]
+    }
+}
+
+/// Stroke colour and dash of pop-out i's line.
+fn stroke(i: usize) -> (&'static str, &'static str) {
+    let dash = if i >= LINE.len() { "6,4" } else { "none" };
+    (LINE[i % LINE.len()], dash)
+}
 const W: f64 = 420.0;
 const H: f64 = 320.0;
 const LEFT: f64 = 70.0;
@@ -96,9 +115,14 @@ pub fn draw(d: &hockle::rod::PhaseDiagram) -> String {
         |p| p.nu,
     );
     // legend
-    let y = H + TOP + 60.0;
+    let mut y = H + TOP + 60.0;
     let mut x = LEFT;
-    for (k, fill) in FILL.iter().enumerate().take(d.pop_out_count() + 1) {
+    for k in 0..=d.pop_out_count() {
+        let fill = fill(k);
+        if x > width - 120.0 {
+            x = LEFT;
+            y += 22.0;
+        }
         let _ = writeln!(
             s,
             r#"<rect x="{x}" y="{}" width="16" height="12" fill="{fill}" stroke="grey"/><text x="{}" y="{}">{k} pop-outs</text>"#,
@@ -109,10 +133,14 @@ pub fn draw(d: &hockle::rod::PhaseDiagram) -> String {
         x += 105.0;
     }
     for i in 0..d.pop_out_count() {
-        let c = LINE[i % LINE.len()];
+        let (c, dash) = stroke(i);
+        if x > width - 160.0 {
+            x = LEFT;
+            y += 22.0;
+        }
         let _ = writeln!(
             s,
-            r#"<line x1="{x}" y1="{}" x2="{}" y2="{}" stroke="{c}" stroke-width="2.5"/><text x="{}" y="{}">cusps of pop-out {}</text>"#,
+            r#"<line x1="{x}" y1="{}" x2="{}" y2="{}" stroke="{c}" stroke-dasharray="{dash}" stroke-width="2.5"/><text x="{}" y="{}">cusps of pop-out {}</text>"#,
             y - 4.0,
             x + 22.0,
             y - 4.0,
@@ -162,7 +190,7 @@ fn panel(
                     TOP + H - f64::from(j + 1) * ch,
                     f64::from(e - i) * cw + 0.3,
                     ch + 0.3,
-                    FILL[k.min(FILL.len() - 1)]
+                    fill(k)
                 );
             }
             i = e;
@@ -180,9 +208,10 @@ fn panel(
             .collect();
         let _ = writeln!(
             s,
-            r#"<polyline points="{}" fill="none" stroke="{}" stroke-width="2.5"/>"#,
+            r#"<polyline points="{}" fill="none" stroke="{}" stroke-dasharray="{}" stroke-width="2.5"/>"#,
             pts.join(" "),
-            LINE[l.pop_out % LINE.len()]
+            stroke(l.pop_out).0,
+            stroke(l.pop_out).1
         );
     }
     let (x0, x1) = (p.x0 + LEFT, p.x0 + LEFT + W);
