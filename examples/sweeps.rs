@@ -3,19 +3,21 @@
 //! exact-helix model (dashed) where the paper draws it.
 //!
 //! ```sh
-//! cargo run --release --example sweeps [-- --out DIR]
+//! cargo run --release --features rayon --example sweeps [-- --out DIR] [--serial]
 //! ```
 //!
 //! Writes `sweep_theta0.svg`, `sweep_anisotropy.svg` and `sweep_helix.svg`
 //! (default `$CARGO_TARGET_DIR/hockle`, else `target/hockle` under the crate) and prints, for every spring, its
-//! pop-outs and the run time.
+//! pop-outs. Figs. th0 and aniso are one [`sweep`] of ten pulls (parallel
+//! with the `rayon` feature; `--serial` runs them one after the other to
+//! measure the speed-up, docs/PERFORMANCE.md).
 
 use std::error::Error;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use hockle::Stiffness;
-use hockle::spring::{HelixModel, Model, Response, RodModel, Spring};
+use hockle::spring::{HelixModel, Model, Response, RodModel, Spring, Target, sweep, sweep_serial};
 use plotters::prelude::*;
 
 const MAX_FORCE_SCALED: f64 = 3.0;
@@ -28,28 +30,68 @@ struct Curve {
     helix: Option<Response>,
 }
 
-fn pull(theta0_degrees: f64, a_over_b: f64, with_helix: bool) -> Result<Curve, Box<dyn Error>> {
-    let spring = Spring::from_degrees(4, theta0_degrees, Stiffness::nikolai(a_over_b, 0.05)?)?;
+fn spring(theta0_degrees: f64, a_over_b: f64) -> Result<Spring, Box<dyn Error>> {
+    Ok(Spring::from_degrees(
+        4,
+        theta0_degrees,
+        Stiffness::nikolai(a_over_b, 0.05)?,
+    )?)
+}
+
+/// Pulls every (θ0, A/B, with the helix) of both figures with one
+/// [`sweep`] (in parallel with `--features rayon`, serially with
+/// `--serial`) and returns the curves in input order.
+fn pull_all(cases: &[(f64, f64, bool)], serial: bool) -> Result<Vec<Curve>, Box<dyn Error>> {
+    let scenes: Vec<(Spring, Target)> = cases
+        .iter()
+        .map(|&(t, a, _)| Ok((spring(t, a)?, Target::Force(MAX_FORCE_SCALED))))
+        .collect::<Result<_, Box<dyn Error>>>()?;
     let start = Instant::now();
-    let rod = RodModel::default().pull(&spring, MAX_FORCE_SCALED)?;
-    let label = format!("θ0 = {theta0_degrees}°, A/B = {a_over_b}");
+    let report = |done: usize, total: usize| {
+        eprintln!(
+            "  {done}/{total} pulls done ({:.1} s)",
+            start.elapsed().as_secs_f64()
+        );
+    };
+    let rods = if serial {
+        sweep_serial(&RodModel::default(), &scenes, report)
+    } else {
+        sweep(&RodModel::default(), &scenes, report)
+    };
     println!(
-        "{label:<26} {} pop-outs, {} points, {:>6.0} ms{}",
-        rod.pop_outs().len(),
-        rod.curve().len(),
-        start.elapsed().as_secs_f64() * 1e3,
-        if rod.reached_target() {
-            String::new()
+        "{} rod pulls in {:.2} s ({})",
+        scenes.len(),
+        start.elapsed().as_secs_f64(),
+        if serial {
+            "serial"
+        } else if cfg!(feature = "rayon") {
+            "parallel, rayon"
         } else {
-            format!(" (stopped: {})", rod.termination())
+            "serial: built without the rayon feature"
         }
     );
-    let helix = if with_helix {
-        Some(HelixModel::new(400)?.pull(&spring, MAX_FORCE_SCALED)?)
-    } else {
-        None
-    };
-    Ok(Curve { label, rod, helix })
+    let mut curves = Vec::new();
+    for (&(t, a, with_helix), rod) in cases.iter().zip(rods) {
+        let rod = rod?;
+        let label = format!("θ0 = {t}°, A/B = {a}");
+        println!(
+            "{label:<26} {} pop-outs, {} points{}",
+            rod.pop_outs().len(),
+            rod.curve().len(),
+            if rod.reached_target() {
+                String::new()
+            } else {
+                format!(" (stopped: {})", rod.termination())
+            }
+        );
+        let helix = if with_helix {
+            Some(HelixModel::new(400)?.pull(&spring(t, a)?, MAX_FORCE_SCALED)?)
+        } else {
+            None
+        };
+        curves.push(Curve { label, rod, helix });
+    }
+    Ok(curves)
 }
 
 fn scaled(r: &Response) -> Vec<(f64, f64)> {
@@ -123,48 +165,55 @@ fn main() -> Result<(), Box<dyn Error>> {
             PathBuf::from,
         )
         .join("hockle");
+    let mut serial = false;
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
         match arg.as_str() {
             "--out" => out = PathBuf::from(args.next().ok_or("--out needs a directory")?),
+            "--serial" => serial = true,
             other => {
-                return Err(format!("unknown argument {other}; usage: sweeps [--out DIR]").into());
+                return Err(format!(
+                    "unknown argument {other}; usage: sweeps [--out DIR] [--serial]"
+                )
+                .into());
             }
         }
     }
     std::fs::create_dir_all(&out)?;
 
-    let theta0: Vec<Curve> = [89.8, 89.5, 89.0, 88.0]
+    // Figs. th0 and aniso in one sweep: four helix angles at A/B = 10,
+    // then six anisotropies at θ0 = 89.8° (the helix drawn for the last two).
+    let mut cases: Vec<(f64, f64, bool)> = [89.8, 89.5, 89.0, 88.0]
         .into_iter()
-        .map(|t| pull(t, 10.0, false))
-        .collect::<Result<_, _>>()?;
+        .map(|t| (t, 10.0, false))
+        .collect();
+    cases.extend(
+        [
+            (10.0, false),
+            (8.0, false),
+            (6.0, false),
+            (4.0, false),
+            (1.0, true),
+            (0.1, true),
+        ]
+        .map(|(a, h)| (89.8, a, h)),
+    );
+    let mut all = pull_all(&cases, serial)?;
+    let aniso = all.split_off(4);
+    let theta0 = all;
     plot(
         "Fig. th0: helix angles (n = 4, A/B = 10, ν = 0.05)",
         &theta0,
         &out.join("sweep_theta0.svg"),
     )?;
 
-    let aniso: Vec<Curve> = [
-        (10.0, false),
-        (8.0, false),
-        (6.0, false),
-        (4.0, false),
-        (1.0, true),
-        (0.1, true),
-    ]
-    .into_iter()
-    .map(|(a, h)| pull(89.8, a, h))
-    .collect::<Result<_, _>>()?;
     plot(
         "Fig. aniso: anisotropies (n = 4, θ0 = 89.8°, ν = 0.05)",
         &aniso,
         &out.join("sweep_anisotropy.svg"),
     )?;
 
-    let helix: Vec<Curve> = [88.0, 60.0]
-        .into_iter()
-        .map(|t| pull(t, 10.0, true))
-        .collect::<Result<_, _>>()?;
+    let helix = pull_all(&[(88.0, 10.0, true), (60.0, 10.0, true)], serial)?;
     plot(
         "Fig. helix: the rod against the exact helix (n = 4, A/B = 10)",
         &helix,

@@ -45,9 +45,14 @@
 //! both: the curve's projection stops and reverses. Both are located by the
 //! Illinois iteration on arclength (as folds are in a [`Continuation`]) on
 //! the sign change of dλ/ds (then of dμ/ds) within a step; a located zero
-//! where the other rate is below √(locate tolerance) in the unit tangent is
-//! a cusp (at a generic cusp both rates are O(distance), so at the located
-//! point they are O(tolerance); a turn keeps the other rate O(1)).
+//! where the other rate is below √(locate tolerance) in the unit tangent,
+//! or below a tenth of its larger value at the step's two ends, is a cusp
+//! (at a generic cusp both rates are O(distance), so at the located point
+//! they are O(tolerance) while the step's ends are a step away; a turn
+//! keeps the other rate near its largest). The second test makes the
+//! classification independent of the norm's weights: on the rod, whose
+//! solution changes fast with θ0, dθ0/ds is below √(tolerance) in the unit
+//! tangent along whole stretches of a fold curve.
 
 use std::fmt;
 use std::ops::ControlFlow;
@@ -484,10 +489,17 @@ impl FoldContinuation {
     ) -> Result<Vec<(Corrected, f64, FoldPointKind)>> {
         let mu = self.settings.parameter;
         let small = self.settings.locate_tolerance.sqrt();
+        // A cusp: the other rate is at the tolerance's level in the unit
+        // tangent, or small against its values at the step's ends (the
+        // rates' sizes depend on the norm's weights; at a turn the other
+        // rate is near its largest, at a cusp it vanishes with the first).
+        let vanishes = |r: f64, ends: (f64, f64)| {
+            r.abs() <= small || r.abs() <= CUSP_RATIO * ends.0.abs().max(ends.1.abs())
+        };
         let mut found = Vec::new();
         if l0 * l1 < 0.0 {
             let (c, s) = steps.locate(Watch::Tangent(self.fold), (-ds, l0), (0.0, l1), 0.0)?;
-            let kind = if c.tangent.p[mu].abs() <= small {
+            let kind = if vanishes(c.tangent.p[mu], (m0, m1)) {
                 FoldPointKind::Cusp
             } else {
                 FoldPointKind::Turn(self.fold)
@@ -497,7 +509,7 @@ impl FoldContinuation {
         let cusp = found.iter().any(|f| f.2 == FoldPointKind::Cusp);
         if m0 * m1 < 0.0 && !cusp {
             let (c, s) = steps.locate(Watch::Tangent(mu), (-ds, m0), (0.0, m1), 0.0)?;
-            let kind = if c.tangent.p[self.fold].abs() <= small {
+            let kind = if vanishes(c.tangent.p[self.fold], (l0, l1)) {
                 FoldPointKind::Cusp
             } else {
                 FoldPointKind::Turn(mu)
@@ -508,6 +520,10 @@ impl FoldContinuation {
         Ok(found)
     }
 }
+
+/// At a located zero of one rate, the other rate below this fraction of
+/// its larger value at the step's ends marks a cusp (module docs).
+const CUSP_RATIO: f64 = 0.1;
 
 /// The null vector (v, δq) of the collocation Jacobian at `x` (λ fixed):
 /// one solve with the nearly singular factorisation, scaled to

@@ -24,8 +24,17 @@ use crate::bvp::Problem;
 /// derivatives to about ε^(2/3) ≈ 4e-11 relative.
 const STEP: f64 = 6.055_454_452_393_343e-6;
 
-/// The extended problem of a fold of `problem` (module docs).
-pub(super) struct Extended<'a, P: Problem + ?Sized> {
+/// The extended problem of a fold of `problem` (module docs): a
+/// [`Problem`] of its own, whose solutions are (y, v) with parameters
+/// (p, δq); [`FoldPoint::extended`](super::FoldPoint::extended) is one.
+///
+/// Exported as [`FoldProblem`](super::FoldProblem) so that a fold curve's
+/// own folds can be continued: a cusp of a fold in λ is a fold of this
+/// problem in μ (the curve's turn in μ where λ stops too), so
+/// [`FoldContinuation`](super::FoldContinuation) run on it, with μ as the
+/// fold parameter and λ among the solver's free parameters, traces the
+/// curve of cusps in a third parameter.
+pub struct Extended<'a, P: Problem + ?Sized> {
     pub(super) problem: &'a P,
     /// The solver's free parameters q of the original problem (δq follows p).
     pub(super) free: Vec<usize>,
@@ -48,6 +57,19 @@ fn directional(x: &[f64], d: &[f64], mut eval: impl FnMut(&[f64], &mut [f64]), o
     eval(&minus, &mut back);
     for (o, b) in out.iter_mut().zip(&back) {
         *o = (*o - b) / (2.0 * delta);
+    }
+}
+
+impl<'a, P: Problem + ?Sized> Extended<'a, P> {
+    /// The extended problem of `problem`'s folds when the solver frees the
+    /// parameters `free` (their variations δq follow p in the extended
+    /// parameter vector; the fold parameter is not among them).
+    #[must_use]
+    pub fn new(problem: &'a P, free: &[usize]) -> Self {
+        Extended {
+            problem,
+            free: free.to_vec(),
+        }
     }
 }
 

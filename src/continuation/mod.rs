@@ -97,6 +97,7 @@ mod tolerance;
 
 pub use diagram::Output;
 pub use fold_curve::{FoldContinuation, FoldCurve, FoldObserver, FoldPoint, FoldPointKind};
+pub use fold_extended::Extended as FoldProblem;
 pub use mesh_error::ErrorEstimate;
 pub use observer::{Every, Observer};
 pub use point::{Point, PointKind};

@@ -115,10 +115,13 @@
 //! curve with its six folds in 2.0 s of CPU and 7 MB, folds converged to
 //! 6e-7; at θ0 = 90° the planar solutions agree with the elastica to 1e-10.
 
+pub mod cascade;
 mod contact;
 mod equilibrium;
 mod jet;
 mod measure;
+mod nikolai;
+mod phase_diagram;
 mod problem;
 mod pull;
 mod quat;
@@ -133,8 +136,11 @@ use crate::error::{Error, Result};
 use crate::load::Control;
 use crate::stiffness::Stiffness;
 
+pub use cascade::{CuspSearch, Followed};
 pub use contact::Contact;
 pub use equilibrium::Equilibrium;
+pub use nikolai::NikolaiRod;
+pub use phase_diagram::{CuspAt, CuspLine, Fixed, PhaseDiagram};
 pub use pull::{Pull, PullRun, Start};
 pub use stability::{STABILITY_SEGMENTS, SecondVariation};
 

@@ -35,6 +35,7 @@ mod helix_model;
 mod response;
 mod rod_model;
 mod scene;
+mod sweep;
 
 pub use crate::load::{Control, Target};
 pub use elastica_model::ElasticaModel;
@@ -42,6 +43,7 @@ pub use helix_model::HelixModel;
 pub use response::{BranchMatch, Direction, Jump, PopOut, Response, Stretch};
 pub use rod_model::RodModel;
 pub use scene::Spring;
+pub use sweep::{sweep, sweep_serial};
 
 use crate::error::{Error, Result};
 

@@ -8,6 +8,7 @@ mod cascade;
 mod diamonds;
 mod input;
 mod jacobians;
+mod phase_diagram;
 mod planar;
 mod stability;
 mod tolerance;

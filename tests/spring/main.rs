@@ -9,3 +9,4 @@ mod contact;
 mod models;
 mod scene;
 mod stability;
+mod sweep;

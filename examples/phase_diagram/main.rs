@@ -1,0 +1,413 @@
+//! Where the cascade exists: the number of pop-outs of a spring over
+//! (θ0, A/B) at ν = 0.05 and over (θ0, ν) at A/B = 10, bounded by the cusp
+//! curves of its pop-outs, traced by continuation (`rod::cascade`).
+//!
+//! ```sh
+//! cargo run --release --example phase_diagram [-- --coils N] [--out DIR] [--compute]
+//! cargo run --release --example phase_diagram -- --check   # convergence, docs/ACCURACY.md
+//! cargo run --release --example phase_diagram -- --scene 89.8,10,0.05 [--scene …]
+//! ```
+//!
+//! Without `--compute`, n = 4 is read from the committed diagram
+//! `docs/data/phase_diagram_n4.csv` (what `--compute` writes), other n from
+//! `docs/data/phase_diagram_n<N>.csv` where committed (n = 2, 3, 6), else
+//! computed. `--compute` pulls the paper's spring at θ0 = 89.8°, A/B = 10,
+//! ν = 0.05 (n coils), continues each pop-out's maximum-force fold down in
+//! θ0 to its cusp, and from there traces the curve of cusps in A/B (at
+//! ν = 0.05 and at the other ν of the reading grid, reached along A/B =
+//! 100) and in ν (at A/B = 10): `phase_diagram_n<N>.csv` and `.svg` in the
+//! output folder (default `$CARGO_TARGET_DIR/hockle`, else `target/hockle`).
+//!
+//! `--scene THETA0_DEG,A_OVER_B,NU` (repeatable) prints one line per scene,
+//! `scene theta0=<deg> a_over_b=<x> nu=<x> pop_outs=<count>`, read off the
+//! diagram ([`hockle::rod::PhaseDiagram::pop_outs`]), not from a pull.
+
+use std::error::Error;
+use std::ops::ControlFlow;
+use std::path::PathBuf;
+use std::time::Instant;
+
+use hockle::Stiffness;
+use hockle::bvp::Solution;
+use hockle::continuation::{FoldPoint, FoldPointKind};
+use hockle::rod::{CuspAt, CuspLine, CuspSearch, Fixed, Followed, NikolaiRod, PhaseDiagram, Rod};
+
+/// The committed diagram of n = 4.
+const N4: &str = include_str!("../../docs/data/phase_diagram_n4.csv");
+/// The reference spring the folds start from.
+const THETA0_DEG: f64 = 89.8;
+const A_OVER_B: f64 = 10.0;
+const NU: f64 = 0.05;
+/// The A/B range of the lines at fixed ν.
+const A_MIN: f64 = 0.01;
+const A_MAX: f64 = 100.0;
+/// The ν range of the line at A/B = 10 and of the reading grid.
+const NU_MIN: f64 = -0.9;
+const NU_MAX: f64 = 0.49;
+/// The other ν of the reading grid (lines at fixed ν).
+const NU_GRID: [f64; 11] = [-0.9, -0.6, -0.4, -0.2, -0.1, 0.0, 0.1, 0.15, 0.2, 0.3, 0.45];
+const HALF_PI: f64 = core::f64::consts::FRAC_PI_2;
+/// Mesh intervals: cusps converged to 6e-8 rad against 96 (docs/ACCURACY.md).
+const INTERVALS: usize = 24;
+
+fn usage() -> String {
+    "usage: phase_diagram [--coils N] [--out DIR] [--compute | --check] [--scene THETA0_DEG,A_OVER_B,NU]…".into()
+}
+
+fn at(p: &FoldPoint) -> CuspAt {
+    let q = p.parameters();
+    CuspAt {
+        theta0: q[Rod::THETA0],
+        a_over_b: q[NikolaiRod::LN_A_OVER_B].exp(),
+        nu: q[NikolaiRod::NU],
+        force_scaled: q[NikolaiRod::FORCE_SCALED],
+    }
+}
+
+/// A cusp curve from `start` in `second` to `to`: its points and its end
+/// (the fold problem's solution there) unless it reached θ0 = 90°.
+fn trace(
+    search: &CuspSearch,
+    family: &NikolaiRod,
+    start: &Solution,
+    second: usize,
+    to: f64,
+) -> Result<(Vec<CuspAt>, Option<Solution>), Box<dyn Error + Send + Sync>> {
+    let from = start.parameters()[second];
+    let mut points = Vec::new();
+    let clock = Instant::now();
+    let (mut start, mut search, mut steps) = (start.clone(), *search, 0);
+    // A run that fails (Newton, or locating the stop or θ0 = 90° inside a
+    // long step) is resumed from its last point with a quarter of the
+    // largest step, at most three times.
+    for attempt in 0..4 {
+        let ds = 0.05 * (to - start.parameters()[second]).signum();
+        let mut last: Option<FoldPoint> = None;
+        let curve = search.cusp_curve(
+            family,
+            &start,
+            (Rod::THETA0, second),
+            to,
+            ds,
+            |p: &FoldPoint| {
+                // (a resumed run may step past 90° before it sees the
+                // event: the mirror image of the curve, dropped; the
+                // located end is clamped to 90°)
+                let c = at(p);
+                if (p.kind() != FoldPointKind::Start || attempt == 0) && c.theta0 <= HALF_PI + 1e-6
+                {
+                    points.push(CuspAt {
+                        theta0: c.theta0.min(HALF_PI),
+                        ..c
+                    });
+                }
+                last = Some(p.clone());
+                ControlFlow::Continue(())
+            },
+        )?;
+        steps += curve.accepted();
+        let last = last.ok_or("empty cusp curve")?;
+        let done = match last.kind() {
+            FoldPointKind::ParameterValue => Some(Some(last.solution().clone())),
+            FoldPointKind::Event(0) => Some(None),
+            _ => None,
+        };
+        if let Some(end) = done {
+            eprintln!(
+                "  cusp curve in parameter {second} from {from:.4} to {:.4} (θ0 {:.4}°): {steps} steps in {:.1} s",
+                last.parameter(),
+                last.fold_parameter().to_degrees(),
+                clock.elapsed().as_secs_f64()
+            );
+            return Ok((points, end));
+        }
+        eprintln!(
+            "  cusp curve in parameter {second} from {from:.4}: resumed at {:.4} (θ0 {:.4}°) after: {}",
+            last.parameter(),
+            last.fold_parameter().to_degrees(),
+            curve.termination()
+        );
+        start = last.solution().clone();
+        search = search.curve_ds_max(0.25 * 0.25_f64.powi(attempt));
+    }
+    Err(format!("cusp curve from {from} in parameter {second} to {to}: failed four times").into())
+}
+
+/// Every cusp line of pop-out `i`.
+fn pop_out_lines(
+    coils: u32,
+    i: usize,
+    max_fold: &Solution,
+) -> Result<Vec<CuspLine>, Box<dyn Error + Send + Sync>> {
+    let rod = Rod::new(
+        coils,
+        THETA0_DEG.to_radians(),
+        Stiffness::nikolai(A_OVER_B, NU)?,
+    )?;
+    let family = NikolaiRod::new(rod, NU)?;
+    let search = CuspSearch::new().intervals(INTERVALS).curve_ds_max(0.5);
+    let Followed::Cusp(cusp) =
+        search.follow(&family, max_fold, Rod::THETA0, 45_f64.to_radians())?
+    else {
+        return Err(format!("pop-out {i}: no cusp between θ0 = 45° and {THETA0_DEG}°").into());
+    };
+    let c0 = cusp.extended().clone();
+    let mut lines = Vec::new();
+    // In A/B at ν = 0.05: down to the tip at 90°, up to A_MAX.
+    let (mut down, _) = trace(&search, &family, &c0, NikolaiRod::LN_A_OVER_B, A_MIN.ln())?;
+    let (up, end) = trace(&search, &family, &c0, NikolaiRod::LN_A_OVER_B, A_MAX.ln())?;
+    down.extend(up);
+    lines.push(CuspLine {
+        pop_out: i,
+        fixed: Fixed::Nu(NU),
+        points: down,
+    });
+    // In ν at A/B = 10.
+    let fine = search.curve_ds_max(0.25);
+    let (mut down, _) = trace(&fine, &family, &c0, NikolaiRod::NU, NU_MIN)?;
+    let (up, _) = trace(&fine, &family, &c0, NikolaiRod::NU, NU_MAX)?;
+    down.extend(up);
+    lines.push(CuspLine {
+        pop_out: i,
+        fixed: Fixed::AOverB(A_OVER_B),
+        points: down,
+    });
+    // The reading grid: from (A_MAX, 0.05) along ν to each ν, then in A/B
+    // down to the tip.
+    let end = end.ok_or("the line at ν = 0.05 reached 90° before A/B = 100")?;
+    for side in [
+        NU_GRID
+            .iter()
+            .rev()
+            .filter(|v| **v < NU)
+            .copied()
+            .collect::<Vec<_>>(),
+        NU_GRID.iter().filter(|v| **v > NU).copied().collect(),
+    ] {
+        let mut from = Some(end.clone());
+        for nu in side {
+            let Some(start) = from.take() else {
+                // the region ended in ν at A/B = 100: empty beyond
+                lines.push(empty(i, nu));
+                continue;
+            };
+            let (_, reached) = trace(&search, &family, &start, NikolaiRod::NU, nu)?;
+            match reached {
+                Some(s) => {
+                    let (points, _) =
+                        trace(&search, &family, &s, NikolaiRod::LN_A_OVER_B, A_MIN.ln())?;
+                    lines.push(CuspLine {
+                        pop_out: i,
+                        fixed: Fixed::Nu(nu),
+                        points,
+                    });
+                    from = Some(s);
+                }
+                None => lines.push(empty(i, nu)),
+            }
+        }
+    }
+    Ok(lines)
+}
+
+/// A line at fixed ν where the pop-out does not exist up to A/B = 100.
+fn empty(i: usize, nu: f64) -> CuspLine {
+    CuspLine {
+        pop_out: i,
+        fixed: Fixed::Nu(nu),
+        points: vec![CuspAt {
+            theta0: core::f64::consts::FRAC_PI_2,
+            a_over_b: A_MAX,
+            nu,
+            force_scaled: f64::NAN,
+        }],
+    }
+}
+
+/// The convergence and consistency checks of docs/ACCURACY.md, on the
+/// line at ν = 0.05 of every pop-out: (1) the cusp in θ0 at A/B = 10 from
+/// the maximum-force fold and from the minimum-force fold (the same point
+/// reached from both sides), on 16, 24, 48 and 96 intervals; (2) the cusp
+/// in A/B at θ0 = 89.8° found by a fold curve in A/B (a second path),
+/// against the cusp curve from (1) stopped at that A/B, whose θ0 must be
+/// 89.8°.
+fn check(coils: u32) -> Result<(), Box<dyn Error + Send + Sync>> {
+    let rod = Rod::new(
+        coils,
+        THETA0_DEG.to_radians(),
+        Stiffness::nikolai(A_OVER_B, NU)?,
+    )?;
+    let family = NikolaiRod::new(rod, NU)?;
+    let down = 45_f64.to_radians();
+    for n in [16, 24, 48, 96] {
+        let search = CuspSearch::new().intervals(n);
+        let pops = search.pop_outs(&family, 3.0)?;
+        for (i, [max, min]) in pops.iter().enumerate() {
+            let from_max = search.follow(&family, max, Rod::THETA0, down)?;
+            let from_min = search.follow(&family, min, Rod::THETA0, down)?;
+            let (Followed::Cusp(a), Followed::Cusp(b)) = (from_max, from_min) else {
+                return Err(format!("N = {n}, pop-out {i}: no cusp from both folds").into());
+            };
+            let line = format!(
+                "N = {n:3} pop-out {i}: cusp θ0 = {:.12} rad (from the max), {:.12} (from the min), f = {:.10}",
+                a.parameter(),
+                b.parameter(),
+                a.fold_parameter()
+            );
+            if n != INTERVALS {
+                println!("{line}");
+                continue;
+            }
+            let Followed::Cusp(c) =
+                search.follow(&family, max, NikolaiRod::LN_A_OVER_B, 0.01_f64.ln())?
+            else {
+                println!("{line}; no cusp in A/B at θ0 = {THETA0_DEG}°");
+                continue;
+            };
+            let a_c = c.parameter();
+            let (pts, _) = trace(&search, &family, a.extended(), NikolaiRod::LN_A_OVER_B, a_c)?;
+            let end = pts.last().ok_or("empty")?;
+            println!(
+                "{line}; in A/B at θ0 = {THETA0_DEG}°: A/B_c = {:.10}, the cusp curve there has θ0 = {:.10}° (difference {:.2e}°)",
+                a_c.exp(),
+                end.theta0.to_degrees(),
+                end.theta0.to_degrees() - THETA0_DEG
+            );
+        }
+    }
+    Ok(())
+}
+
+fn compute(coils: u32) -> Result<PhaseDiagram, Box<dyn Error + Send + Sync>> {
+    let clock = Instant::now();
+    let rod = Rod::new(
+        coils,
+        THETA0_DEG.to_radians(),
+        Stiffness::nikolai(A_OVER_B, NU)?,
+    )?;
+    let family = NikolaiRod::new(rod, NU)?;
+    let pops = CuspSearch::new()
+        .intervals(INTERVALS)
+        .pop_outs(&family, 3.0)?;
+    println!(
+        "n = {coils}: {} pop-outs at θ0 = {THETA0_DEG}°, A/B = {A_OVER_B}, ν = {NU}",
+        pops.len()
+    );
+    let results: Vec<_> = std::thread::scope(|s| {
+        let handles: Vec<_> = pops
+            .iter()
+            .enumerate()
+            .map(|(i, pair)| s.spawn(move || pop_out_lines(coils, i, &pair[0])))
+            .collect();
+        handles
+            .into_iter()
+            .map(|h| h.join().expect("no panic"))
+            .collect()
+    });
+    let mut lines = Vec::new();
+    for r in results {
+        lines.extend(r?);
+    }
+    let d = PhaseDiagram::new(coils, lines)?;
+    println!("computed in {:.1} s", clock.elapsed().as_secs_f64());
+    Ok(d)
+}
+
+fn main() -> Result<(), Box<dyn Error + Send + Sync>> {
+    let mut out = std::env::var_os("CARGO_TARGET_DIR")
+        .map_or_else(
+            || PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target"),
+            PathBuf::from,
+        )
+        .join("hockle");
+    let (mut coils, mut force, mut scenes) = (4_u32, false, Vec::new());
+    let mut args = std::env::args().skip(1);
+    while let Some(arg) = args.next() {
+        match arg.as_str() {
+            "--out" => out = PathBuf::from(args.next().ok_or("--out needs a directory")?),
+            "--compute" => force = true,
+            "--check" => return check(coils),
+            "--coils" => {
+                let v = args.next().ok_or("--coils needs a number")?;
+                coils = v
+                    .parse()
+                    .ok()
+                    .filter(|n| *n > 0)
+                    .ok_or(format!("--coils {v}: a positive whole number of coils"))?;
+            }
+            "--scene" => {
+                let v = args.next().ok_or("--scene needs THETA0_DEG,A_OVER_B,NU")?;
+                let f: Vec<f64> = v
+                    .split(',')
+                    .map(|x| x.trim().parse::<f64>())
+                    .collect::<Result<_, _>>()
+                    .map_err(|_| format!("--scene {v}: three numbers THETA0_DEG,A_OVER_B,NU"))?;
+                let [t, a, nu] = f[..] else {
+                    return Err(format!("--scene {v}: three numbers THETA0_DEG,A_OVER_B,NU").into());
+                };
+                scenes.push((t, a, nu));
+            }
+            other => return Err(format!("unknown argument {other}; {}", usage()).into()),
+        }
+    }
+    for &(t, a, nu) in &scenes {
+        let check = |ok: bool, what: &str| -> Result<(), Box<dyn Error + Send + Sync>> {
+            if ok {
+                Ok(())
+            } else {
+                Err(format!("--scene {t},{a},{nu}: {what}").into())
+            }
+        };
+        check(t > 0.0 && t < 90.0, "θ0 must be in (0°, 90°)")?;
+        check(a > 0.0 && a.is_finite(), "A/B must be finite and positive")?;
+        check(nu > -1.0 && nu < 0.5, "ν must be in (−1, 0.5)")?;
+    }
+    let committed = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("docs/data")
+        .join(format!("phase_diagram_n{coils}.csv"));
+    let diagram = if coils == 4 && !force {
+        PhaseDiagram::from_csv(4, N4)?
+    } else if let (false, Ok(csv)) = (force, std::fs::read_to_string(&committed)) {
+        PhaseDiagram::from_csv(coils, &csv)?
+    } else {
+        let d = compute(coils)?;
+        std::fs::create_dir_all(&out)?;
+        let csv = out.join(format!("phase_diagram_n{coils}.csv"));
+        std::fs::write(&csv, d.to_csv())?;
+        println!("wrote {}", csv.display());
+        d
+    };
+    if scenes.is_empty() {
+        // The reading (lines at fixed ν, interpolated in ν) against the
+        // line traced in ν at A/B = 10.
+        let mut worst = (0.0_f64, 0.0, 0);
+        for l in diagram
+            .lines()
+            .iter()
+            .filter(|l| matches!(l.fixed, Fixed::AOverB(_)))
+        {
+            for p in l.points.iter().filter(|p| p.theta0 < HALF_PI - 1e-9) {
+                let read = diagram.cusp_theta0(l.pop_out, p.a_over_b, p.nu);
+                let e = (read - p.theta0).to_degrees().abs();
+                if e > worst.0 {
+                    worst = (e, p.nu, l.pop_out);
+                }
+            }
+        }
+        println!(
+            "reading off the lines at fixed ν against the line in ν at A/B = 10: θ0_c within {:.3}° (worst: pop-out {} at ν = {:.3})",
+            worst.0, worst.2, worst.1
+        );
+        std::fs::create_dir_all(&out)?;
+        let svg = out.join(format!("phase_diagram_n{coils}.svg"));
+        std::fs::write(&svg, svg::draw(&diagram))?;
+        println!("wrote {}", svg.display());
+    }
+    for (t, a, nu) in scenes {
+        let n = diagram.pop_outs(t.to_radians(), a, nu)?;
+        println!("scene theta0={t} a_over_b={a} nu={nu} pop_outs={n}");
+    }
+    Ok(())
+}
+
+mod svg;

@@ -1,0 +1,302 @@
+//! Where each pop-out exists: the folds of a pull continued in θ0, A/B and
+//! ν to the cusps where the two folds of a pop-out meet ([`CuspSearch`]).
+//!
+//! A pop-out of a pull is a pair of force folds: a maximum F at which the
+//! loop lets go and a minimum at which the curve turns back. Continued in a
+//! second parameter μ (θ0, A/B or ν, [`NikolaiRod`]) the two folds are the
+//! two halves of one fold curve, which they leave through a cusp: there the
+//! maximum and the minimum meet and the pop-out vanishes. The cusp's μ
+//! bounds the range of μ where the pop-out exists.
+//!
+//! ```text
+//!   pull (force control) → folds (F_max,1, F_min,1), (F_max,2, F_min,2), …
+//!   F_max,i continued in μ  →  fold curve  →  first cusp: μ_c,i
+//! ```
+//!
+//! [`CuspSearch::follow`] continues a fold to a requested value of one
+//! parameter and reports the first cusp met on the way;
+//! [`CuspSearch::pop_outs`] pulls a spring and pairs its folds;
+//! [`CuspSearch::cusp_curve`] traces the curve of cusps in a third
+//! parameter (`examples/phase_diagram`).
+//!
+//! ```no_run
+//! use hockle::rod::{CuspSearch, Followed, NikolaiRod, Rod};
+//! use hockle::Stiffness;
+//! // The paper's spring: where does its first pop-out vanish as θ0 falls?
+//! let rod = Rod::new(4, 89.8_f64.to_radians(), Stiffness::nikolai(10.0, 0.05)?)?;
+//! let family = NikolaiRod::new(rod, 0.05)?;
+//! let search = CuspSearch::new().intervals(24);
+//! let pops = search.pop_outs(&family, 3.0)?; // three pairs (max, min)
+//! let Followed::Cusp(cusp) = search.follow(&family, &pops[0][0], Rod::THETA0, 1.0)? else {
+//!     panic!("a cusp above θ0 = 1 rad");
+//! };
+//! assert!((cusp.parameter().to_degrees() - 87.4854).abs() < 1e-3); // docs/ACCURACY.md
+//! # Ok::<(), hockle::Error>(())
+//! ```
+
+use std::ops::ControlFlow;
+
+use super::{NikolaiRod, Pull, Rod};
+use crate::bvp::{Collocation, Solution};
+use crate::continuation::{
+    Continuation, FoldContinuation, FoldObserver, FoldPoint, FoldPointKind, Point, PointKind,
+    Termination,
+};
+use crate::error::{Error, Result};
+use crate::load::Target;
+
+/// Newton's tolerance on a cusp curve (relative to 1 + ‖x‖∞).
+const CUSP_NEWTON_TOLERANCE: f64 = 1e-7;
+
+/// Settings of the fold continuations of [`crate::rod::cascade`] (module
+/// docs), a builder.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CuspSearch {
+    intervals: usize,
+    ds_max: f64,
+    curve_ds_max: f64,
+    max_steps: usize,
+}
+
+/// How a fold followed in one parameter ended ([`CuspSearch::follow`]).
+#[derive(Debug, Clone)]
+pub enum Followed {
+    /// The fold reached the requested value: the solution there (of the
+    /// [`NikolaiRod`], at a fold in its force).
+    Reached(Box<Solution>),
+    /// The fold met a cusp first: the two folds of its pop-out meet here
+    /// and the pop-out vanishes beyond it.
+    Cusp(Box<FoldPoint>),
+    /// The continuation ended otherwise (step limit, Newton failure).
+    Ended(Termination),
+}
+
+impl Default for CuspSearch {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl CuspSearch {
+    /// The defaults:
+    ///
+    /// | setting | default |
+    /// |---|---|
+    /// | [`intervals`](Self::intervals) | 48 uniform intervals, 4 Gauss points (the pull's) |
+    /// | [`ds_max`](Self::ds_max) | 0.5: the largest step of a fold curve |
+    /// | [`curve_ds_max`](Self::curve_ds_max) | 5: the largest step of a cusp curve |
+    /// | [`max_steps`](Self::max_steps) | 400 per fold curve |
+    ///
+    /// The fold curves use the pull's solution weights (r, q: 1; F:
+    /// 1/((2πn)²B)²; M: 1e-3) and weight 1 for the parameters (the force
+    /// scaled by (2πn)²B, [`NikolaiRod`]); turns and cusps are located to
+    /// 1e-9 in arclength.
+    #[must_use]
+    pub fn new() -> Self {
+        Self {
+            intervals: 48,
+            ds_max: 0.5,
+            curve_ds_max: 5.0,
+            max_steps: 400,
+        }
+    }
+
+    /// Uniform mesh intervals of the pull and of every fold curve.
+    #[must_use]
+    pub fn intervals(mut self, n: usize) -> Self {
+        self.intervals = n;
+        self
+    }
+
+    /// The largest step of a fold curve.
+    #[must_use]
+    pub fn ds_max(mut self, ds: f64) -> Self {
+        self.ds_max = ds;
+        self
+    }
+
+    /// The largest step of a cusp curve ([`CuspSearch::cusp_curve`]).
+    #[must_use]
+    pub fn curve_ds_max(mut self, ds: f64) -> Self {
+        self.curve_ds_max = ds;
+        self
+    }
+
+    /// The step limit of each fold curve.
+    #[must_use]
+    pub fn max_steps(mut self, n: usize) -> Self {
+        self.max_steps = n;
+        self
+    }
+
+    /// The number of mesh intervals.
+    #[must_use]
+    pub fn mesh_intervals(&self) -> usize {
+        self.intervals
+    }
+
+    fn pull(&self, family: &NikolaiRod, target: f64) -> Pull {
+        Pull::new(*family.rod(), Target::Force(target)).intervals(self.intervals)
+    }
+
+    fn solver(&self, family: &NikolaiRod) -> Result<Collocation> {
+        self.pull(family, 3.0).check()
+    }
+
+    /// Pulls the family's rod to F/((2πn)²B) = `max_force_scaled` and
+    /// returns its pop-outs as pairs (maximum, minimum) of located folds,
+    /// as solutions of `family`.
+    ///
+    /// # Errors
+    /// As [`Pull::run`]; [`Error::InvalidArgument`] if the folds do not
+    /// alternate maximum, minimum (a pull that ended between the two folds
+    /// of a pop-out drops the unpaired one).
+    pub fn pop_outs(
+        &self,
+        family: &NikolaiRod,
+        max_force_scaled: f64,
+    ) -> Result<Vec<[Solution; 2]>> {
+        let mut folds: Vec<(f64, Solution)> = Vec::new();
+        self.pull(family, max_force_scaled).run(|p: &Point| {
+            if p.kind() == PointKind::Fold {
+                folds.push((p.dparameter_ds(), p.solution().clone()));
+            }
+            ControlFlow::Continue(())
+        })?;
+        let mut pairs = Vec::new();
+        let mut it = folds.into_iter();
+        while let (Some((_, max)), Some((_, min))) = (it.next(), it.next()) {
+            let (fmax, fmin) = (max.parameters()[Rod::FORCE], min.parameters()[Rod::FORCE]);
+            if fmax <= fmin {
+                return Err(Error::InvalidArgument {
+                    name: "pop-out fold force",
+                    value: fmax,
+                    allowed: "a maximum of F above the minimum that follows it",
+                });
+            }
+            pairs.push([family.extend(&max), family.extend(&min)]);
+        }
+        Ok(pairs)
+    }
+
+    /// Continues the fold `start` (a solution of `family` at a fold in the
+    /// scaled force) in `parameter` ([`Rod::THETA0`],
+    /// [`NikolaiRod::LN_A_OVER_B`] or [`NikolaiRod::NU`]) towards `to`, and
+    /// stops at the first cusp or at `to`, whichever comes first.
+    ///
+    /// # Errors
+    /// [`Error::InvalidCount`] for another parameter; the errors of
+    /// [`FoldContinuation::run`] at the start.
+    pub fn follow(
+        &self,
+        family: &NikolaiRod,
+        start: &Solution,
+        parameter: usize,
+        to: f64,
+    ) -> Result<Followed> {
+        if ![Rod::THETA0, NikolaiRod::LN_A_OVER_B, NikolaiRod::NU].contains(&parameter) {
+            return Err(Error::InvalidCount {
+                name: "fold-curve parameter",
+                value: parameter as u64,
+                allowed: "Rod::THETA0, NikolaiRod::LN_A_OVER_B or NikolaiRod::NU",
+            });
+        }
+        let from = start.parameters()[parameter];
+        if from == to {
+            return Ok(Followed::Reached(Box::new(start.clone())));
+        }
+        let scale = family.rod().scale().value();
+        let mut w = [1.0; Rod::DIM];
+        w[7..10].fill(1.0 / (scale * scale));
+        w[10..13].fill(1e-3);
+        let settings = Continuation::new(parameter)
+            .solver(self.solver(family)?)
+            .weights(&w)
+            .step((to - from).signum() * 0.01)
+            .step_bounds(1e-8, self.ds_max)
+            .locate_tolerance(1e-9)
+            .stop_at(to)
+            .max_steps(self.max_steps);
+        let mut first = FirstCusp(None);
+        let curve = FoldContinuation::new(NikolaiRod::FORCE_SCALED, settings)
+            .run(family, start, &mut first)?;
+        if let Some(c) = first.0 {
+            return Ok(Followed::Cusp(Box::new(c)));
+        }
+        Ok(match curve.termination() {
+            Termination::ParameterValue(_) => Followed::Reached(Box::new(
+                curve
+                    .last()
+                    .expect("a run that reached its stop has points")
+                    .solution()
+                    .clone(),
+            )),
+            t => Followed::Ended(t.clone()),
+        })
+    }
+}
+
+/// Stops a fold curve at its first cusp.
+struct FirstCusp(Option<FoldPoint>);
+
+impl FoldObserver for &mut FirstCusp {
+    fn cusp(&mut self, cusp: &FoldPoint) -> ControlFlow<()> {
+        debug_assert_eq!(cusp.kind(), FoldPointKind::Cusp);
+        self.0 = Some(cusp.clone());
+        ControlFlow::Break(())
+    }
+}
+
+impl CuspSearch {
+    /// The curve of cusps through `cusp` (a located cusp of a fold curve in
+    /// `mu`: its [`FoldPoint::extended`], or a point of another cusp curve:
+    /// its [`FoldPoint::solution`]), continued in `nu` from the step `ds`
+    /// towards `to`, or until θ0 reaches 90°: the fold problem's own folds
+    /// in `mu` ([`crate::continuation::FoldProblem`]). Every point is a
+    /// cusp of the force folds, its [`FoldPoint::solution`] the fold
+    /// problem's solution there; `(mu, nu)` of the points draw the
+    /// boundary of the pop-out's region in that plane.
+    ///
+    /// # Errors
+    /// As [`FoldContinuation::run`] at the start.
+    pub fn cusp_curve<O: FoldObserver>(
+        &self,
+        family: &NikolaiRod,
+        cusp: &Solution,
+        (mu, nu): (usize, usize),
+        to: f64,
+        ds: f64,
+        observer: O,
+    ) -> Result<crate::continuation::FoldCurve> {
+        let scale = family.rod().scale().value();
+        let mut w = [1.0; 2 * Rod::DIM];
+        for half in [0, Rod::DIM] {
+            w[half + 7..half + 10].fill(1.0 / (scale * scale));
+            w[half + 10..half + 13].fill(1e-3);
+        }
+        let problem = crate::continuation::FoldProblem::new(family, &[]);
+        let settings = Continuation::new(nu)
+            .solver(
+                // The fold problem's own linearisation differences the
+                // fold problem's Jacobian, whose second derivatives are
+                // central differences already: the residual's noise is
+                // ~1e-10 of ‖x‖ (forces ~ (2πn)²B in y), so Newton's
+                // corrections stall there (measured: up to 2e-8); 1e-7 is reached in 2–4 steps.
+                self.solver(family)?
+                    .free_parameters(&[NikolaiRod::FORCE_SCALED])
+                    .newton_tolerance(CUSP_NEWTON_TOLERANCE),
+            )
+            .weights(&w)
+            .step(ds)
+            .step_bounds(1e-8, self.curve_ds_max)
+            .locate_tolerance(1e-9)
+            .stop_at(to)
+            .stop_when(|s: &Solution| s.parameters()[Rod::THETA0] - core::f64::consts::FRAC_PI_2)
+            .max_steps(self.max_steps);
+        // Turns of the cusp curve are not located: the readers of the
+        // curve check its shape themselves ([`super::PhaseDiagram::new`]).
+        FoldContinuation::new(mu, settings)
+            .detect_cusps(false)
+            .run(&problem, cusp, observer)
+    }
+}

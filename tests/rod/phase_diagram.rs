@@ -1,0 +1,153 @@
+//! The cascade map: the stiffness family, the reading of a diagram, and the
+//! committed n = 4 diagram against direct pulls.
+
+use hockle::bvp::Problem;
+use hockle::rod::{CuspAt, CuspLine, Fixed, NikolaiRod, PhaseDiagram, Rod};
+use hockle::spring::{Model, RodModel, Spring};
+use hockle::{Error, Stiffness};
+
+use crate::common::rel_err;
+
+#[test]
+fn the_family_is_the_rod_at_its_parameters() {
+    let rod = Rod::new(4, 1.5, Stiffness::nikolai(10.0, 0.05).unwrap()).unwrap();
+    let fam = NikolaiRod::new(rod, 0.05).unwrap();
+    let p = fam.parameters(&[12.0, 0.1, 1.4]);
+    // f = F/((2πn)²B): the rod's λ = 12 scaled
+    assert!((p[0] * rod.scale().value() - 12.0).abs() < 1e-12);
+    assert_eq!(&p[1..], &[0.1, 1.4, 10_f64.ln(), 0.05]);
+    // Another A/B and ν: the rod of those stiffnesses (Nikolai's C), to
+    // the roundings of exp(ln 3) and of C (a few ulps: 1e-15 relative).
+    let other = fam.rod_at(&[0.0, 0.1, 1.4, 3_f64.ln(), 0.3]).stiffness();
+    let want = Stiffness::nikolai(3.0, 0.3).unwrap();
+    for (x, r) in [
+        (other.a(), want.a()),
+        (other.b(), want.b()),
+        (other.c(), want.c()),
+    ] {
+        assert!(rel_err(x, r) < 1e-15, "{x} vs {r}");
+    }
+    let y = rod.unstressed(0.3);
+    let (mut f1, mut f2) = ([0.0; 13], [0.0; 13]);
+    fam.rhs(0.3, &y, &[0.5, 0.1, 1.4, 3_f64.ln(), 0.3], &mut f1);
+    let direct = Rod::new(4, 1.5, want).unwrap();
+    direct.rhs(0.3, &y, &[0.5 * rod.scale().value(), 0.1, 1.4], &mut f2);
+    for (a, b) in f1.iter().zip(&f2) {
+        // the same formulas at stiffnesses 1e-15 apart, terms up to 2πn
+        assert!((a - b).abs() < 1e-13 * (1.0 + b.abs()), "{a} vs {b}");
+    }
+    // A rod whose C is not Nikolai's for this ν is refused.
+    assert!(matches!(
+        NikolaiRod::new(rod, 0.3),
+        Err(Error::InvalidArgument { .. })
+    ));
+}
+
+fn line(pop_out: usize, nu: f64, pts: &[(f64, f64)]) -> CuspLine {
+    CuspLine {
+        pop_out,
+        fixed: Fixed::Nu(nu),
+        points: pts
+            .iter()
+            .map(|&(t, a)| CuspAt {
+                theta0: t.to_radians(),
+                a_over_b: a,
+                nu,
+                force_scaled: 0.5,
+            })
+            .collect(),
+    }
+}
+
+#[test]
+fn a_diagram_counts_the_curves_below_a_scene() {
+    // Pop-out 0: θ0_c = 90° at A/B = 2 down to 80° at A/B = 200 (linear in
+    // ln A/B: 85° at A/B = 20) at ν = 0 and 0.4; pop-out 1 from 90° at
+    // A/B = 10 to 88° at 20 at ν = 0, absent (a single point at 90°) at
+    // ν = 0.4.
+    let lines = vec![
+        line(0, 0.0, &[(90.0, 2.0), (80.0, 200.0)]),
+        line(0, 0.4, &[(90.0, 2.0), (80.0, 200.0)]),
+        line(1, 0.0, &[(90.0, 10.0), (88.0, 20.0)]),
+        line(1, 0.4, &[(90.0, 200.0)]),
+    ];
+    let d = PhaseDiagram::new(4, lines).unwrap();
+    let n = |t: f64, a, nu| d.pop_outs(t.to_radians(), a, nu).unwrap();
+    assert_eq!(n(85.5, 20.0, 0.0), 1);
+    assert_eq!(n(84.5, 20.0, 0.0), 0);
+    assert_eq!(n(88.5, 20.0, 0.0), 2);
+    assert_eq!(n(89.9, 1.5, 0.0), 0); // below the tip of both regions
+    assert_eq!(n(81.0, 1e6, 0.0), 1); // beyond the range: the end value (80°)
+    // Pop-out 1 between ν = 0 (88°) and 0.4 (absent, 90°): 89° at ν = 0.2.
+    assert_eq!(n(88.9, 20.0, 0.2), 1);
+    assert_eq!(n(89.1, 20.0, 0.2), 2);
+    for (t, a, nu) in [
+        (0.0, 10.0, 0.0),
+        (90.0, 10.0, 0.0),
+        (45.0, 0.0, 0.0),
+        (45.0, f64::INFINITY, 0.0),
+        (45.0, 1.0, 0.5),
+        (45.0, 1.0, -1.0),
+        (f64::NAN, 1.0, 0.0),
+    ] {
+        assert!(
+            matches!(
+                d.pop_outs(t.to_radians(), a, nu),
+                Err(Error::InvalidArgument { .. })
+            ),
+            "{t} {a} {nu}"
+        );
+    }
+    assert_eq!(PhaseDiagram::from_csv(4, &d.to_csv()).unwrap(), d);
+    // A line whose θ0_c rises with A/B is not a function this reading can use.
+    assert!(PhaseDiagram::new(4, vec![line(0, 0.0, &[(80.0, 2.0), (85.0, 20.0)])]).is_err());
+    assert!(PhaseDiagram::from_csv(4, "header\n0,nu,1,2\n").is_err());
+}
+
+/// The committed diagram (examples/phase_diagram --compute) against direct
+/// pulls on scenes at least 0.1° from every cusp curve: the cusps are
+/// converged to 6e-8 rad (3.4e-6°) in the mesh (docs/ACCURACY.md), so a
+/// pull of 24 intervals, whose folds are within 1e-4° of the converged
+/// ones, must see the pop-outs the diagram predicts.
+#[test]
+fn direct_pulls_see_the_pop_outs_the_diagram_predicts() {
+    let d =
+        PhaseDiagram::from_csv(4, include_str!("../../docs/data/phase_diagram_n4.csv")).unwrap();
+    for (t, a, nu) in SCENES {
+        let predicted = d.pop_outs(t.to_radians(), a, nu).unwrap();
+        // the scene is away from every boundary: 0.1° either side agree
+        let (below, above) = (
+            d.pop_outs((t - 0.1).to_radians(), a, nu).unwrap(),
+            d.pop_outs((t + 0.1).to_radians(), a, nu).unwrap(),
+        );
+        assert!(
+            below == predicted && above == predicted,
+            "scene {t}, {a}, {nu} is near a boundary"
+        );
+        let spring = Spring::from_degrees(4, t, Stiffness::nikolai(a, nu).unwrap()).unwrap();
+        let pull = RodModel::default()
+            .intervals(24)
+            .pull(&spring, 3.0)
+            .unwrap();
+        assert!(pull.reached_target(), "{}", pull.termination());
+        assert_eq!(
+            pull.pop_outs().len(),
+            predicted,
+            "scene θ0 = {t}°, A/B = {a}, ν = {nu}"
+        );
+    }
+}
+
+/// Scenes with 3, 2, 1 and 0 pop-outs on the line at ν = 0.05 and
+/// A/B = 10, then off it: a stiff twist (ν = −0.6: 3 pop-outs at 77°), near
+/// the tip of the third pop-out (A/B = 3: 1), and A/B = 20, ν = 0.2 (1).
+/// The counts are the diagram's; the pulls decide.
+const SCENES: [(f64, f64, f64); 7] = [
+    (89.8, 10.0, 0.05),
+    (87.35, 10.0, 0.05),
+    (86.9, 10.0, 0.05),
+    (86.0, 10.0, 0.05),
+    (77.0, 10.0, -0.6),
+    (89.5, 3.0, 0.05),
+    (88.0, 20.0, 0.2),
+];
