@@ -139,15 +139,16 @@ pub(super) fn hermite_third(
     [d(0), d(1)]
 }
 
-/// The interpolation error estimate 2 h⁴ |ΔP'''·n| / (384 h̄) of a step of
+/// The interpolation error estimate 3 h⁴ |ΔP'''·n| / (384 h̄) of a step of
 /// length `h` whose P''' is `third`, after (or before) a step of length
 /// `h_prev` whose P''' was `third_prev` (h̄ the mean length), with ΔP'''
 /// in the direction of a unit `normal` if given (an error along the curve
 /// moves the interpolant's parametrisation, not its trace), its max-norm
-/// otherwise: twice the bound with the
-/// difference quotient for P'''', which lags the step by half a step
-/// (measured: the bound alone fell 1.3 times short of the true error on a
-/// spring at θ0 = 60° in `tests/rod/tolerance.rs`).
+/// otherwise: three times the bound with the difference quotient for
+/// P'''', which lags the step by half a step (measured in
+/// `tests/rod/tolerance.rs`: the bound alone fell 1.3 times short of the
+/// true error on a spring at θ0 = 60°, twice it 1.04 times on the paper's
+/// spring at 1e-6).
 pub(super) fn hermite_error(
     third: [f64; 2],
     third_prev: [f64; 2],
@@ -160,7 +161,7 @@ pub(super) fn hermite_error(
         Some(n) => (d[0] * n[0] + d[1] * n[1]).abs(),
         None => d[0].abs().max(d[1].abs()),
     };
-    2.0 * h.powi(4) * jump / (384.0 * 0.5 * (h + h_prev))
+    3.0 * h.powi(4) * jump / (384.0 * 0.5 * (h + h_prev))
 }
 
 /// The cubic Hermite interpolant of a step at τ ∈ [0, 1].
@@ -266,7 +267,7 @@ mod tests {
     }
 
     /// On sin, the estimate is above the true maximum interpolation error
-    /// h⁴/384 · max|sin''''|, and within a factor 4 of it.
+    /// h⁴/384 · max|sin''''|, and within a factor 6 of it.
     #[test]
     fn hermite_error_of_sine() {
         let h = 0.2;
@@ -282,6 +283,6 @@ mod tests {
             None,
         );
         let truth = h.powi(4) / 384.0 * (1.2_f64).sin();
-        assert!(e > truth && e < 4.0 * truth, "{e} vs {truth}");
+        assert!(e > truth && e < 6.0 * truth, "{e} vs {truth}");
     }
 }

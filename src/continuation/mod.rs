@@ -62,7 +62,7 @@
 //! failed corrector, or a tangent turning by more than the maximum angle,
 //! halves Δs and retries. With a [`tolerance`](Continuation::tolerance)
 //! the step also keeps the cubic Hermite interpolant of the branch in the
-//! diagram's plane within a quarter of it, the turn of that interpolant's
+//! diagram's plane near a fifth of it and never above half, the turn of that interpolant's
 //! slope within the maximum angle, and the corrected point within 0.2 Δs
 //! of the predictor; and the mesh follows the solution (see there). Folds are sign changes of dλ/ds,
 //! branch points sign changes of det [F_x; τᵀ]; both are located by the

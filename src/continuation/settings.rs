@@ -274,7 +274,7 @@ impl Continuation {
     ///   mesh far finer than needed is coarsened the same way;
     /// - the step: besides the corrector and the angle between tangents, the
     ///   interpolation error of the cubic Hermite interpolant of the step
-    ///   (h⁴ ‖P''''‖/384) is kept below a quarter of the tolerance;
+    ///   (h⁴ ‖P''''‖/384) is aimed at a fifth of the tolerance and a step above half of it is done again;
     /// - the corrector's Newton tolerance 1e-4·tol (within [1e-12, 1e-6]) and
     ///   the location tolerance 0.05·tol (in arclength).
     ///

@@ -5,7 +5,7 @@ use std::fmt;
 
 use super::mesh_error::{ErrorEstimate, HalvedMesh};
 use super::norm::IntegralNorm;
-use super::tolerance::{INTERPOLATION_SHARE, StepCheck, hermite_factor};
+use super::tolerance::{INTERPOLATION_REJECT, StepCheck, hermite_factor};
 use super::{BranchSide, Continuation, Point, PointKind, Termination};
 use crate::bvp::system::{State, System};
 use crate::bvp::{NewtonOptions, Problem, Solution, finish};
@@ -370,7 +370,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
                 .map(|(cs, s, ..)| (cs.x.clone(), cs.tangent.clone(), *s))
                 .collect();
             let at_located = self.located_interpolation_error(&c, ds, &inside);
-            if at_located > 4.0 * INTERPOLATION_SHARE * tol && self.ds > self.cont.ds_min {
+            if at_located > INTERPOLATION_REJECT * tol && self.ds > self.cont.ds_min {
                 self.ds = (0.5 * ds).max(self.cont.ds_min);
                 self.factored_at_x0 = false;
                 self.rejected += 1;

@@ -56,7 +56,12 @@ fn diagram_turn(a: [f64; 2], b: [f64; 2]) -> f64 {
 }
 
 /// The share of the tolerance left to the interpolation between points.
-pub(super) const INTERPOLATION_SHARE: f64 = 0.25;
+const INTERPOLATION_SHARE: f64 = 0.25;
+
+/// A step whose interpolation error exceeds this share of the tolerance is
+/// done again with a shorter Δs (the mesh's share being the other half, the
+/// curve stays within the tolerance).
+pub(super) const INTERPOLATION_REJECT: f64 = 0.5;
 
 /// The step factor that brings the Hermite interpolation error `error` to
 /// 0.8 of its share of `tol` (error ∝ h⁴).
@@ -108,7 +113,7 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
 
     /// The interpolation check of a step: its P''' and error estimate, or
     /// `None` when the step was rejected (Δs reduced) for an error above
-    /// four times its share of the tolerance.
+    /// half the tolerance.
     pub(super) fn check_interpolation(
         &mut self,
         c: &super::corrector::Corrected,
@@ -155,7 +160,7 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         let too_far = turn > self.cont.max_angle
             || drift > MAX_DRIFT
             || skipped
-            || error > 4.0 * INTERPOLATION_SHARE * tol;
+            || error > INTERPOLATION_REJECT * tol;
         if too_far && self.ds > self.cont.ds_min {
             let by_turn = (0.6 * self.cont.max_angle / turn).min(0.5 * MAX_DRIFT / drift);
             self.ds =

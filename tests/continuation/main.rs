@@ -11,6 +11,7 @@ mod fold_curve;
 mod observer;
 mod settings;
 mod stops;
+mod tolerance;
 
 use std::ops::ControlFlow;
 

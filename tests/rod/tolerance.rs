@@ -208,3 +208,20 @@ fn dense_output_reads_the_interpolant() {
         );
     }
 }
+
+/// On a fixed mesh at a tight tolerance every check against the halved mesh
+/// converges: the estimate stays finite. (Its Newton used to ask for
+/// corrections below 1e-13, in the rounding of the rod's, and reported ∞
+/// from N = 12, m = 7, tol 1e-9 to F/((2πn)²B) = 0.3; branch trade11.)
+#[test]
+fn tight_tolerance_on_a_fixed_mesh_keeps_a_finite_estimate() {
+    let run = Pull::new(rod(89.8, 10.0), Target::Force(0.3))
+        .tolerance(1e-9)
+        .intervals(12)
+        .points(7)
+        .run(())
+        .unwrap();
+    assert!(run.reached_target(), "{run}");
+    let e = run.estimate();
+    assert!(e.mesh.is_finite() && e.curve().is_finite(), "{run}");
+}
