@@ -7,7 +7,7 @@
 //! | question | model | when |
 //! |---|---|---|
 //! | spring constant | linear response (closed form, [`Spring::spring_constant`]) | helical intrinsic strains |
-//! | anything else | exact helix | never certified: loaded on its axis, it leaves the rest state with another slope (k_rod/k_helix = 0.41–0.65 on the test grid) |
+//! | anything else | exact helix | never certified: loaded on its axis, it leaves the rest state with another slope (k_rod/k_helix from 0.41 for a slinky to 0.65 for n = 6, θ0 = 89.9°, A/B = 20) |
 //! | anything else | flat elastica | never certified: it passes ≥ 0.4 cos θ0 from the rest state, ignores pitch, A, C and pop-outs, and no bound on its error is known without the rod |
 //! | anything else | rod at the tolerance asked | always: its own estimate ([`crate::rod::PullRun::estimate`]) |
 //!
