@@ -108,15 +108,15 @@ impl core::fmt::Display for SetAside {
             }
             SetAside::LoadedOnItsAxis { slope_ratio } => write!(
                 f,
-                "it is loaded on its axis, the spring through its ends (slope at rest {:.3} of the helix's)",
-                slope_ratio
+                "loaded on its axis, not through the ends, so {:.2} times too stiff at rest",
+                1.0 / slope_ratio
             ),
             SetAside::MissesTheRestState { lower_bound } => write!(
                 f,
-                "it starts flat, at least {lower_bound:.1e} from the spring's rest state"
+                "starts flat, at least {lower_bound:.1e} from the spring's rest state"
             ),
             SetAside::NoBound => f.write_str("no error bound without the rod"),
-            SetAside::NotAnswered => f.write_str("it does not answer this question"),
+            SetAside::NotAnswered => f.write_str("does not answer this question"),
         }
     }
 }
@@ -231,7 +231,7 @@ impl Answer {
                     k => format!(", {k} pop-outs below the load"),
                 };
                 format!(
-                    "{}: helix set aside ({helix}), elastica set aside ({elastica}); estimated error {:.1e}{folds}",
+                    "{}: helix set aside: {helix}; elastica set aside: {elastica}; estimated error {:.1e}{folds}",
                     self.choice, self.estimated_error
                 )
             }
