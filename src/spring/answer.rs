@@ -128,7 +128,8 @@ pub enum Reason {
     /// The linear response at rest is a closed form, exact up to rounding.
     ClosedForm,
     /// Neither cheap model can be certified at the tolerance: the rod
-    /// answered, at the tolerance asked (the cheapest rod that meets it).
+    /// answered, at half the tolerance asked (its estimate is reported
+    /// doubled), the cheapest rod that meets it.
     RodNeeded {
         /// Why not the exact helix.
         helix: SetAside,

@@ -9,7 +9,7 @@
 //! | spring constant | linear response (closed form, [`Spring::spring_constant`]) | helical intrinsic strains |
 //! | anything else | exact helix | never certified: loaded on its axis, it leaves the rest state with another slope (k_rod/k_helix from 0.41 for a slinky to 0.65 for n = 6, θ0 = 89.9°, A/B = 20) |
 //! | anything else | flat elastica | never certified: it passes ≥ 0.4 cos θ0 from the rest state, ignores pitch, A, C and pop-outs, and no bound on its error is known without the rod |
-//! | anything else | rod at the tolerance asked | always: its own estimate ([`crate::rod::PullRun::estimate`]) |
+//! | anything else | rod at half the tolerance asked | always: twice its own estimate ([`crate::rod::PullRun::estimate`]) |
 //!
 //! The rod pulls only as far as the question needs: to the largest load or
 //! extension asked about (pop-outs: to the load, then stops), with no
@@ -39,8 +39,9 @@ const CLOSED_FORM_ERROR: f64 = 1e-14;
 /// checks it.
 const ROD_ESTIMATE_SAFETY: f64 = 2.0;
 
-/// If the rod's reported error exceeds the tolerance, it is run once more
-/// at the tolerance divided by this.
+/// The rod is run at the tolerance over [`ROD_ESTIMATE_SAFETY`]; if the
+/// reported error still exceeds the tolerance, it is run once more at a
+/// tolerance this many times smaller.
 const RETRY_DIVISOR: f64 = 10.0;
 
 /// The rod's smallest tolerance ([`crate::rod::Pull::tolerance`]).
@@ -111,15 +112,17 @@ impl Spring {
                 .driver(self, target)?
                 .run(())
         };
-        let mut rod_tolerance = tolerance;
+        // the rod aims its own estimate at the tolerance, the answer reports
+        // ROD_ESTIMATE_SAFETY times it: ask the rod for that much less
+        let mut rod_tolerance = (tolerance / ROD_ESTIMATE_SAFETY).max(MIN_ROD_TOLERANCE);
         let mut run = pull(rod_tolerance)?;
         let reported = |run: &crate::rod::PullRun| match question {
             // the folds are located points: their error is the mesh's
             Question::PopOuts { .. } => ROD_ESTIMATE_SAFETY * run.estimate().mesh,
             _ => ROD_ESTIMATE_SAFETY * run.estimate().curve(),
         };
-        if reported(&run) > tolerance && tolerance / RETRY_DIVISOR >= MIN_ROD_TOLERANCE {
-            rod_tolerance = tolerance / RETRY_DIVISOR;
+        if reported(&run) > tolerance && rod_tolerance / RETRY_DIVISOR >= MIN_ROD_TOLERANCE {
+            rod_tolerance /= RETRY_DIVISOR;
             run = pull(rod_tolerance)?;
         }
         let estimated_error = reported(&run);
