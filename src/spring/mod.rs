@@ -29,17 +29,22 @@
 //! # Ok::<(), hockle::Error>(())
 //! ```
 
+mod answer;
+mod choice;
 mod contact;
 mod elastica_model;
 mod helix_model;
+mod question;
 mod response;
 mod rod_model;
 mod scene;
 mod sweep;
 
 pub use crate::load::{Control, Target};
+pub use answer::{Answer, Choice, Reason, SetAside, Value};
 pub use elastica_model::ElasticaModel;
 pub use helix_model::HelixModel;
+pub use question::Question;
 pub use response::{BranchMatch, Direction, Jump, PopOut, Response, Stretch};
 pub use rod_model::RodModel;
 pub use scene::Spring;

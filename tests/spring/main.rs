@@ -5,7 +5,9 @@ mod common;
 
 mod bad_input;
 mod cascade;
+mod choice;
 mod contact;
+mod measure;
 mod models;
 mod scene;
 mod stability;

@@ -1,0 +1,251 @@
+//! [`Answer`]: what [`Spring::answer`](super::Spring::answer) returns: the
+//! value asked for, its estimated error, the model that computed it and
+//! why that model.
+
+use std::time::Duration;
+
+use super::{Jump, PopOut, Response};
+
+/// The value of an [`Answer`], one variant per
+/// [`Question`](super::Question).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum Value {
+    /// The pull from rest to the load, with its curve, folds and loop
+    /// counts ([`Response`]).
+    Curve(Box<Response>),
+    /// For each extension asked, every F/((2πn)²B) at which the curve
+    /// passes through it, in curve order (empty where the pull never has
+    /// that extension).
+    Forces(Vec<Vec<f64>>),
+    /// For each force asked, every Δz at which the curve has it, in curve
+    /// order.
+    Extensions(Vec<Vec<f64>>),
+    /// dF/dΔz at rest (physical force per unit extension).
+    SpringConstant(f64),
+    /// The pop-outs below the load and the jumps of a force-controlled test
+    /// (loading and unloading).
+    PopOuts {
+        /// In curve order.
+        pop_outs: Vec<PopOut>,
+        /// [`Response::jumps`] under force control.
+        jumps: Vec<Jump>,
+    },
+}
+
+/// The model that answered.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Choice {
+    /// A closed form of the linear response at rest
+    /// ([`Spring::spring_constant`](super::Spring::spring_constant)).
+    LinearResponse,
+    /// The 3D rod ([`RodModel`](super::RodModel)) at this tolerance.
+    Rod {
+        /// The tolerance the rod was run at.
+        tolerance: f64,
+    },
+}
+
+impl Choice {
+    /// A short name for tables: `linear` or `rod`.
+    #[must_use]
+    pub fn name(&self) -> &'static str {
+        match self {
+            Choice::LinearResponse => "linear",
+            Choice::Rod { .. } => "rod",
+        }
+    }
+}
+
+impl core::fmt::Display for Choice {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Choice::LinearResponse => f.write_str("linear response (closed form)"),
+            Choice::Rod { tolerance } => write!(f, "rod at tolerance {tolerance:.0e}"),
+        }
+    }
+}
+
+/// Why a cheaper model than the one chosen was not used.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum SetAside {
+    /// The model assumes the spring's intrinsic strains are its helix's
+    /// and they are not.
+    NotHelical,
+    /// The exact helix is loaded on its own axis (end plates), the spring
+    /// through its ends: the two leave the rest state with different
+    /// slopes, so the helix is off at first order in the force.
+    LoadedOnItsAxis {
+        /// The spring's slope at rest over the helix's (both closed forms:
+        /// [`Spring::spring_constant`](super::Spring::spring_constant),
+        /// [`Helix::spring_constant`](crate::helix::Helix::spring_constant)).
+        slope_ratio: f64,
+    },
+    /// The flat elastica starts from Δz = 0, the spring from cos θ0: its
+    /// curve passes at least this far (max norm in (Δz, F/((2πn)²B))) from
+    /// the spring's rest state, which is exact.
+    MissesTheRestState {
+        /// A lower bound on the elastica's error.
+        lower_bound: f64,
+    },
+    /// No bound on the model's error is known without running the rod (the
+    /// elastica ignores pitch, A and C, and knows no pop-out). A rod check
+    /// would bound it only by the check's own error plus the distance
+    /// between the two, so the check's curve would be a better answer than
+    /// the cheap model's at the same cost.
+    NoBound,
+    /// The question is not one this model answers (e.g. a push).
+    NotAnswered,
+}
+
+impl core::fmt::Display for SetAside {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            SetAside::NotHelical => {
+                f.write_str("the spring's intrinsic strains are not its helix's")
+            }
+            SetAside::LoadedOnItsAxis { slope_ratio } => write!(
+                f,
+                "loaded on its axis, not through the ends, so {:.2} times too stiff at rest",
+                1.0 / slope_ratio
+            ),
+            SetAside::MissesTheRestState { lower_bound } => write!(
+                f,
+                "starts flat, at least {lower_bound:.1e} from the spring's rest state"
+            ),
+            SetAside::NoBound => f.write_str("no error bound without the rod"),
+            SetAside::NotAnswered => f.write_str("does not answer this question"),
+        }
+    }
+}
+
+/// Why the chosen model answered.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Reason {
+    /// The linear response at rest is a closed form, exact up to rounding.
+    ClosedForm,
+    /// Neither cheap model can be certified at the tolerance: the rod
+    /// answered, at half the tolerance asked (its estimate is reported
+    /// doubled), the cheapest rod that meets it.
+    RodNeeded {
+        /// Why not the exact helix.
+        helix: SetAside,
+        /// Why not the flat elastica.
+        elastica: SetAside,
+        /// Pop-outs the rod found below the load (0 if the question needs
+        /// no force-controlled pull).
+        pop_outs: usize,
+    },
+}
+
+/// The answer to a [`Question`](super::Question) at a tolerance: the value,
+/// its estimated error, the model used and why.
+///
+/// The error is the model's own estimate: for the rod, the largest
+/// distance (max norm in (Δz, F/((2πn)²B))) between what it returns (its
+/// points, folds and interpolant, and the values read off it) and the exact
+/// curve ([`crate::rod::PullRun::estimate`]); for the spring constant, a
+/// relative error.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Answer {
+    pub(super) value: Value,
+    pub(super) estimated_error: f64,
+    pub(super) tolerance: f64,
+    pub(super) choice: Choice,
+    pub(super) reason: Reason,
+    pub(super) reached: bool,
+    pub(super) elapsed: Duration,
+}
+
+impl Answer {
+    /// The value asked for.
+    #[must_use]
+    pub fn value(&self) -> &Value {
+        &self.value
+    }
+
+    /// The estimated error (type docs).
+    #[must_use]
+    pub fn estimated_error(&self) -> f64 {
+        self.estimated_error
+    }
+
+    /// The tolerance asked for.
+    #[must_use]
+    pub fn tolerance(&self) -> f64 {
+        self.tolerance
+    }
+
+    /// Whether the estimated error is within the tolerance and the pull
+    /// (if any) reached its target.
+    #[must_use]
+    pub fn meets_tolerance(&self) -> bool {
+        self.reached && self.estimated_error <= self.tolerance
+    }
+
+    /// Whether the pull (if any) reached its target; a pull that stopped
+    /// early answers with the points it has (see the [`Response`] of a
+    /// curve for why).
+    #[must_use]
+    pub fn reached_target(&self) -> bool {
+        self.reached
+    }
+
+    /// The model that answered.
+    #[must_use]
+    pub fn choice(&self) -> Choice {
+        self.choice
+    }
+
+    /// Why that model (typed; [`Answer::why`] in words).
+    #[must_use]
+    pub fn reason(&self) -> Reason {
+        self.reason
+    }
+
+    /// Wall-clock time of the answer.
+    #[must_use]
+    pub fn elapsed(&self) -> Duration {
+        self.elapsed
+    }
+
+    /// The reason in one sentence, e.g. "linear response: closed form,
+    /// estimated error 1e-13 (relative)".
+    #[must_use]
+    pub fn why(&self) -> String {
+        match self.reason {
+            Reason::ClosedForm => format!(
+                "linear response: closed form (Castigliano on the rest helix), estimated error {:.0e} (relative)",
+                self.estimated_error
+            ),
+            Reason::RodNeeded {
+                helix,
+                elastica,
+                pop_outs,
+            } => {
+                let folds = match pop_outs {
+                    0 => String::new(),
+                    1 => ", 1 pop-out below the load".to_owned(),
+                    k => format!(", {k} pop-outs below the load"),
+                };
+                format!(
+                    "{}: helix set aside: {helix}; elastica set aside: {elastica}; estimated error {:.1e}{folds}",
+                    self.choice, self.estimated_error
+                )
+            }
+        }
+    }
+}
+
+impl core::fmt::Display for Answer {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(&self.why())?;
+        if !self.reached {
+            f.write_str(" (the pull stopped before its target)")?;
+        }
+        Ok(())
+    }
+}
