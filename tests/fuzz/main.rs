@@ -143,13 +143,39 @@ fn long_run() {
 
 /// Every value type of the `special` layer can cross threads (the
 /// elastica and helix types are asserted in their modules, the
-/// continuation's in tests/continuation/observer.rs, the rod's and the
-/// spring's models in tests/rod/input.rs), and the bvp and result types
-/// asserted nowhere else (issue 10).
+/// continuation's runs in tests/continuation/observer.rs, the rod's and
+/// the spring's models and the stability and contact types in
+/// tests/rod/input.rs), and the bvp, fold-curve, error-estimate and result
+/// types asserted nowhere else (issue 10).
 const _: fn() = || {
     fn send_sync<T: Send + Sync>() {}
     send_sync::<hockle::special::Modulus>();
     send_sync::<hockle::special::Jacobi>();
+    send_sync::<hockle::special::JacobiDm>();
+    send_sync::<hockle::special::FixedModulus>();
+    send_sync::<hockle::bvp::classic::Linear>();
+    send_sync::<hockle::bvp::classic::Bratu>();
+    send_sync::<hockle::bvp::classic::BratuLength>();
+    send_sync::<hockle::bvp::classic::Troesch>();
+    send_sync::<hockle::bvp::classic::Quadratic>();
+    send_sync::<hockle::bvp::classic::Euler>();
+    send_sync::<hockle::bvp::classic::Eigen>();
+    send_sync::<hockle::bvp::classic::Coupled13>();
+    send_sync::<hockle::continuation::ErrorEstimate>();
+    send_sync::<hockle::continuation::Output>();
+    send_sync::<hockle::continuation::FoldContinuation>();
+    send_sync::<hockle::continuation::FoldCurve>();
+    send_sync::<hockle::continuation::FoldPoint>();
+    send_sync::<hockle::continuation::FoldPointKind>();
+    send_sync::<hockle::curve::Slope>();
+    send_sync::<hockle::ForceExtension>();
+    send_sync::<hockle::ForceScale>();
+    send_sync::<hockle::Target>();
+    send_sync::<hockle::stability::Stability>();
+    send_sync::<hockle::stability::IndexCrossing>();
+    send_sync::<hockle::rod::SecondVariation>();
+    send_sync::<hockle::rod::Contact>();
+    send_sync::<hockle::rod::Start>();
     send_sync::<hockle::bvp::Mesh>();
     send_sync::<hockle::bvp::Collocation>();
     send_sync::<hockle::bvp::Solution>();
