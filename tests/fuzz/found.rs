@@ -322,3 +322,54 @@ fn helix_model_meets_a_force_or_says_it_cannot() {
         "{res:?}"
     );
 }
+
+/// Found by the long run (`continuation_entries`, seed 1004): a run on
+/// Bratu with stops [4, 5e-324], a location tolerance of 1 in arclength
+/// (valid: finite, > 0) and two Newton iterations ended with
+/// `ParameterValue(0.0239…)`, a value it was not asked to stop at: the stop
+/// was located only to the arclength tolerance, and when the Newton solve
+/// with λ fixed at the stop failed, the located point was kept as the stop
+/// (a fallback meant for a stop at a fold). Now a located stop is on its
+/// value, or the run fails with the typed Newton error (points kept).
+#[test]
+fn a_stop_that_cannot_be_pinned_is_a_failure() {
+    use hockle::bvp::Solution;
+    use hockle::bvp::classic::Bratu;
+    use hockle::continuation::{Continuation, PointKind, Termination};
+    let start = crate::continuation::bratu_start();
+    let stops = [4.0, 5e-324];
+    let mut cont = Continuation::new(0)
+        .step(0.1)
+        .step_bounds(1e-8, core::f64::consts::FRAC_PI_2)
+        .parameter_weight(1.0)
+        .max_angle(0.35)
+        .locate_tolerance(0.999_999_999_158_882_7)
+        .max_newton(2)
+        .max_steps(1);
+    for v in stops {
+        cont = cont.stop_at(v);
+    }
+    for (i, level) in [2.953_994_530_000_934_5, -4.358_893_596_804_443_5e-212]
+        .into_iter()
+        .enumerate()
+    {
+        cont = cont.stop_when(move |sol: &Solution| sol.at_mesh(0)[1] - level - i as f64);
+    }
+    let run = cont.run(&Bratu::default(), &start, ()).unwrap();
+    let last = run.points().last().unwrap();
+    match run.termination() {
+        Termination::ParameterValue(v) => assert!(
+            stops.contains(v) && last.kind() == PointKind::ParameterValue && last.parameter() == *v,
+            "ParameterValue({v}) with the last point at λ = {}",
+            last.parameter()
+        ),
+        Termination::Failed { error, .. } => assert!(
+            matches!(
+                error,
+                Error::NewtonNotConverged { .. } | Error::NewtonDiverged { .. }
+            ),
+            "{error}"
+        ),
+        t => panic!("{t:?}"),
+    }
+}

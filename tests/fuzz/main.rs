@@ -110,11 +110,13 @@ fn bvp_huge_counts() {
 
 /// The long run documented in docs/ACCURACY.md (call counts printed):
 /// every module runs even when an earlier one fails; the test fails at the
-/// end if any did.
+/// end if any did. `HOCKLE_FUZZ_ONLY=<module>` runs one module (with its
+/// long-run seed).
 #[test]
 #[ignore = "long: about 30× the CI budget (minutes)"]
 fn long_run() {
     const FACTOR: u64 = 30;
+    let only = std::env::var("HOCKLE_FUZZ_ONLY").ok();
     let mut failed = Vec::new();
     for (i, (name, calls, f)) in [
         (
@@ -133,6 +135,9 @@ fn long_run() {
     .into_iter()
     .enumerate()
     {
+        if only.as_ref().is_some_and(|o| o != name) {
+            continue;
+        }
         let one = std::panic::catch_unwind(|| run(name, 1000 + i as u64, calls * FACTOR, f));
         if one.is_err() {
             failed.push(name);
