@@ -373,3 +373,97 @@ fn a_stop_that_cannot_be_pinned_is_a_failure() {
         t => panic!("{t:?}"),
     }
 }
+
+/// Reported by the long run before the tolerance engine (`rod_entries`,
+/// seed 1005): pulls on coarse fixed meshes returned `Ok` curves with
+/// |Δz| = 2.4 and 6.3, which no inextensible rod of unit length has. With
+/// the tolerance engine the same draws end in typed errors, and fixed
+/// meshes of 2–4 intervals keep |Δz| ≤ 1; where such a pull "reaches" its
+/// target far from the right answer, its error estimate says so. The
+/// reference is the adaptive default pull (its own estimate ~1e-6, checked
+/// against converged meshes in tests/rod/tolerance.rs); "far" is 0.01 in
+/// Δz, 10⁴ times that.
+#[test]
+fn coarse_fixed_meshes_stay_rods_and_say_they_are_not_accurate() {
+    use hockle::rod::{Pull, Rod};
+    let rod = Rod::new(
+        4,
+        89.8_f64.to_radians(),
+        Stiffness::nikolai(10.0, 0.05).unwrap(),
+    )
+    .unwrap();
+    let target = Target::Force(100.0);
+    let reference = Pull::new(rod, target).run(()).unwrap();
+    assert!(reference.reached_target());
+    let dz_ref = reference.curve().points().last().unwrap().extension;
+    let mut far = 0;
+    for intervals in 2..=4 {
+        for m in [2, 3, 4] {
+            let pull = Pull::new(rod, target).intervals(intervals).points(m);
+            let run = match pull.run(()) {
+                Ok(run) => run,
+                // a typed solver error at the start is an answer too
+                Err(Error::NewtonNotConverged { .. } | Error::NewtonDiverged { .. }) => continue,
+                Err(e) => panic!("{intervals} intervals, m = {m}: {e}"),
+            };
+            let c = run.curve();
+            assert!(
+                c.points().iter().all(|p| p.extension.abs() <= 1.0),
+                "{intervals} intervals, m = {m}: |Δz| > 1"
+            );
+            let end = c.points().last().unwrap().extension;
+            if run.reached_target() && (end - dz_ref).abs() > 0.01 {
+                far += 1;
+                assert!(
+                    run.estimate().curve() > run.tolerance(),
+                    "{intervals} intervals, m = {m}: Δz = {end} vs {dz_ref}, estimate {}",
+                    run.estimate()
+                );
+            }
+        }
+    }
+    // the check is not empty: 2 intervals at m = 4 end at Δz ≈ 0.40
+    assert!(far >= 1);
+}
+
+/// Found by the long run (`rod_entries`, seed 1005), still failing with
+/// the tolerance engine: an almost straight rod (θ0 = 3.2e-23, A/B = 100)
+/// pushed to Δz = −0.5 under extension control on a fixed mesh of 11
+/// intervals with m = 2 returned `Ok` with points at Δz = 1.27, 2.42, 2.29
+/// (no inextensible rod of unit length has |Δz| > 1; its estimate said
+/// 5.1), and with more steps even "reached" −0.5 along that path. Now the
+/// run ends `Failed` with `NotARod` at the first such point, the points
+/// before it kept.
+#[test]
+fn a_pull_through_points_that_are_no_rod_fails() {
+    use hockle::continuation::Termination;
+    use hockle::rod::{Pull, Rod};
+    let s = Stiffness::new(100.0, 1.0, 1.885_902_876_001_885_9).unwrap();
+    let rod = Rod::new(1, 3.171_855_365_100_386_6e-23, s).unwrap();
+    for steps in [5, 50] {
+        let run = Pull::new(rod, Target::Extension(-0.5))
+            .intervals(11)
+            .points(2)
+            .max_steps(steps)
+            .max_angle(0.3)
+            .locate_folds(false)
+            .run(())
+            .unwrap();
+        let c = run.curve();
+        assert!(
+            !c.is_empty() && c.points().iter().all(|p| p.extension.abs() <= 1.0),
+            "steps {steps}: {c}"
+        );
+        assert!(
+            matches!(
+                run.termination(),
+                Termination::Failed {
+                    error: Error::NotARod { .. },
+                    ..
+                }
+            ),
+            "steps {steps}: {}",
+            run.termination()
+        );
+    }
+}

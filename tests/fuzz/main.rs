@@ -111,11 +111,14 @@ fn bvp_huge_counts() {
 /// The long run documented in docs/ACCURACY.md (call counts printed):
 /// every module runs even when an earlier one fails; the test fails at the
 /// end if any did. `HOCKLE_FUZZ_ONLY=<module>` runs one module (with its
-/// long-run seed).
+/// long-run seed), `HOCKLE_FUZZ_FACTOR=k` k× the CI budget instead of 30×.
 #[test]
 #[ignore = "long: about 30× the CI budget (minutes)"]
 fn long_run() {
-    const FACTOR: u64 = 30;
+    let factor: u64 = std::env::var("HOCKLE_FUZZ_FACTOR")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(30);
     let only = std::env::var("HOCKLE_FUZZ_ONLY").ok();
     let mut failed = Vec::new();
     for (i, (name, calls, f)) in [
@@ -138,7 +141,7 @@ fn long_run() {
         if only.as_ref().is_some_and(|o| o != name) {
             continue;
         }
-        let one = std::panic::catch_unwind(|| run(name, 1000 + i as u64, calls * FACTOR, f));
+        let one = std::panic::catch_unwind(|| run(name, 1000 + i as u64, calls * factor, f));
         if one.is_err() {
             failed.push(name);
         }

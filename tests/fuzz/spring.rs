@@ -327,7 +327,11 @@ fn rod_pull(g: &mut Gen, r: &mut Report, spring: &Spring, t: Target, valid_targe
                 Termination::Stopped => seen.get() >= ROD_POINTS,
                 Termination::ParameterValue(_) => true,
                 Termination::Failed { error, .. } => {
-                    model_refusal(error) || matches!(error, Error::StepAngleTooLarge { .. })
+                    model_refusal(error)
+                        || matches!(
+                            error,
+                            Error::StepAngleTooLarge { .. } | Error::NotARod { .. }
+                        )
                 }
                 _ => false,
             };
