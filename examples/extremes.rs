@@ -311,6 +311,7 @@ fn rod() {
         };
         let pop_outs = RodModel::response(run_default.clone()).map_or(0, |r| r.pop_outs().len());
         let folds = match fold_difference(&run_default, &run_ref) {
+            _ if !run_ref.reached_target() => "reference did not reach".to_string(),
             Some(_) if run_default.folds().is_empty() => "—".to_string(),
             Some(d) => format!("{d:.1e}"),
             None => format!(
