@@ -13,13 +13,17 @@
 //! with `special::jacobi`, independent of the root solve), the centreline's
 //! end against the closed-form extension, and traces to large forces.
 //! rod: the paper's spring with one parameter moved at a time, pulled to
-//! F/((2πn)²B) = 100 on the default mesh (48 intervals) and on 96; the
-//! difference of the fold positions (or of the final extension) between the
-//! two meshes says where the default mesh is not accurate enough.
+//! F/((2πn)²B) = 100 with the default settings (tolerance 1e-6, adaptive
+//! mesh) and with tolerance 1e-7 (the reference); the difference of the
+//! fold positions (or of the final extension) between the two against the
+//! default pull's own estimate says whether the estimate covers its error.
 
 use core::f64::consts::PI;
 
-use hockle::continuation::Termination;
+use std::ops::ControlFlow;
+use std::time::{Duration, Instant};
+
+use hockle::continuation::{Point, Termination};
 use hockle::elastica::{Branch, Elastica, Trace, secondary_fold};
 use hockle::rod::{Pull, PullRun, Rod};
 use hockle::special::{Modulus, ellip_e, ellip_e_inc, ellip_f, ellip_k, jacobi};
@@ -191,22 +195,41 @@ fn elastica() {
 /// The pull target of the rod table: F/((2πn)²B) = 100.
 const ROD_TARGET: f64 = 100.0;
 
-/// One pull of the rod table on `intervals` mesh intervals.
+/// The tolerance of the rod table's reference pull.
+const REFERENCE_TOLERANCE: f64 = 1e-7;
+
+/// Wall-clock budget of a reference pull: stopped by its observer after
+/// this (a reference at 1e-8 took 775 s for n = 8 on the shared machine).
+const REFERENCE_BUDGET: Duration = Duration::from_secs(90);
+
+/// One pull of the rod table: the default settings, or tolerance
+/// `tolerance` within `REFERENCE_BUDGET`.
 fn pull(
     n: u32,
     theta0_deg: f64,
     a_over_b: f64,
     nu: f64,
-    intervals: usize,
+    tolerance: Option<f64>,
 ) -> hockle::Result<PullRun> {
     let rod = Rod::new(
         n,
         theta0_deg.to_radians(),
         Stiffness::nikolai(a_over_b, nu)?,
     )?;
-    Pull::new(rod, Target::Force(ROD_TARGET))
-        .intervals(intervals)
-        .run(())
+    let pull = Pull::new(rod, Target::Force(ROD_TARGET));
+    match tolerance {
+        Some(tol) => {
+            let clock = Instant::now();
+            pull.tolerance(tol).run(|_p: &Point| {
+                if clock.elapsed() > REFERENCE_BUDGET {
+                    ControlFlow::Break(())
+                } else {
+                    ControlFlow::Continue(())
+                }
+            })
+        }
+        None => pull.run(()),
+    }
 }
 
 /// The largest difference between the folds of two runs in the plot plane
@@ -246,6 +269,7 @@ fn termination(t: &Termination) -> String {
     match t {
         Termination::ParameterValue(_) => "reached".into(),
         Termination::MaxSteps(n) => format!("step limit ({n})"),
+        Termination::Stopped => format!("stopped after {} s", REFERENCE_BUDGET.as_secs()),
         Termination::Failed { ds, error } => format!("Failed at ds = {ds:.1e}: {error}"),
         other => other.to_string(),
     }
@@ -253,9 +277,9 @@ fn termination(t: &Termination) -> String {
 
 fn rod() {
     println!(
-        "| n | θ0 | A/B | ν | 48 intervals: end | points | folds | pop-outs | time | 96: end | folds | time | 48 vs 96: folds | 48 vs 96: end Δz |"
+        "| n | θ0 | A/B | ν | default: end | points | folds | pop-outs | estimate | intervals (max) | time | 1e-7: end | folds | time | default vs 1e-7: folds | end Δz |"
     );
-    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
     let paper = (4, 89.8, 10.0, 0.05);
     let mut cases = Vec::new();
     for n in [1, 2, 8, 16] {
@@ -272,48 +296,52 @@ fn rod() {
     }
     for (n, th, ab, nu) in cases {
         let head = format!("| {n} | {th}° | {ab} | {nu} |");
-        // the two meshes on two threads
+        // the two tolerances on two threads
         let (coarse, fine) = std::thread::scope(|sc| {
-            let fine = sc.spawn(|| pull(n, th, ab, nu, 96));
-            let coarse = pull(n, th, ab, nu, 48);
-            (coarse, fine.join().expect("the 96-interval pull panicked"))
+            let fine = sc.spawn(|| pull(n, th, ab, nu, Some(REFERENCE_TOLERANCE)));
+            let coarse = pull(n, th, ab, nu, None);
+            (coarse, fine.join().expect("the reference pull panicked"))
         });
-        let (run48, run96) = match (coarse, fine) {
+        let (run_default, run_ref) = match (coarse, fine) {
             (Ok(a), Ok(b)) => (a, b),
             (Err(e), _) | (_, Err(e)) => {
-                println!("{head} {e} | | | | | | | | | |");
+                println!("{head} {e} | | | | | | | | | | | |");
                 continue;
             }
         };
-        let pop_outs = RodModel::response(run48.clone()).map_or(0, |r| r.pop_outs().len());
-        let folds = match fold_difference(&run48, &run96) {
-            Some(_) if run48.folds().is_empty() => "—".to_string(),
+        let pop_outs = RodModel::response(run_default.clone()).map_or(0, |r| r.pop_outs().len());
+        let folds = match fold_difference(&run_default, &run_ref) {
+            _ if !run_ref.reached_target() => "reference did not reach".to_string(),
+            Some(_) if run_default.folds().is_empty() => "—".to_string(),
             Some(d) => format!("{d:.1e}"),
             None => format!(
                 "fold kinds differ ({} vs {})",
-                run48.folds().len(),
-                run96.folds().len()
+                run_default.folds().len(),
+                run_ref.folds().len()
             ),
         };
-        let end = if run48.reached_target() && run96.reached_target() {
+        let end = if run_default.reached_target() && run_ref.reached_target() {
             format!(
                 "{:.1e}",
-                (last_extension(&run48) - last_extension(&run96)).abs()
+                (last_extension(&run_default) - last_extension(&run_ref)).abs()
             )
         } else {
             "—".to_string()
         };
         println!(
-            "{head} {} (Δz = {:.8}) | {} | {} | {pop_outs} | {:.1} s | {} (Δz = {:.8}) | {} | {:.1} s | {folds} | {end} |",
-            termination(run48.termination()),
-            last_extension(&run48),
-            run48.curve().len(),
-            run48.folds().len(),
-            run48.elapsed().as_secs_f64(),
-            termination(run96.termination()),
-            last_extension(&run96),
-            run96.folds().len(),
-            run96.elapsed().as_secs_f64(),
+            "{head} {} (Δz = {:.8}) | {} | {} | {pop_outs} | {:.1e} | {} ({}) | {:.1} s | {} (Δz = {:.8}) | {} | {:.1} s | {folds} | {end} |",
+            termination(run_default.termination()),
+            last_extension(&run_default),
+            run_default.curve().len(),
+            run_default.folds().len(),
+            run_default.estimate().curve(),
+            run_default.estimate().intervals,
+            run_default.estimate().max_intervals,
+            run_default.elapsed().as_secs_f64(),
+            termination(run_ref.termination()),
+            last_extension(&run_ref),
+            run_ref.folds().len(),
+            run_ref.elapsed().as_secs_f64(),
         );
     }
 }

@@ -265,6 +265,21 @@ pub enum Error {
         /// The extension of the unloaded spring.
         rest_extension: f64,
     },
+    /// A rod solution whose end is farther from its start than the rod is
+    /// long, |Δz| > 1 + the pull's tolerance: no inextensible rod of unit
+    /// length; a spurious collocation solution of a fixed mesh too coarse
+    /// for the shape (robust10b).
+    #[error(
+        "the solution on {intervals} mesh intervals has |Δz| = {extension} > 1: no inextensible \
+         rod of unit length reaches that far; the mesh is too coarse for the shape (use more \
+         intervals, or the adaptive default)"
+    )]
+    NotARod {
+        /// The extension Δz of the solution.
+        extension: f64,
+        /// The mesh intervals of the solution.
+        intervals: u64,
+    },
     /// A model was asked about a spring outside what it assumes.
     #[error("the {model} model cannot answer this: {assumption}")]
     OutsideModel {

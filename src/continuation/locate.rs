@@ -150,10 +150,12 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
             if let Some(k) = piece {
                 let (a, b) = ((k[0].0, k[0].1 - v), (k[1].0, k[1].1 - v));
                 match self.locate(Watch::Stop(i), a, b, log_ref) {
-                    Ok((cs, s)) => {
-                        let cs = self.pin_parameter(cs, v);
-                        found.push((cs, s, PointKind::ParameterValue, true));
-                    }
+                    // (robust10b) a stop that cannot be put on its value
+                    // is a failure, not a stop at another value
+                    Ok((cs, s)) => match self.pin_parameter(cs, v) {
+                        Ok(cs) => found.push((cs, s, PointKind::ParameterValue, true)),
+                        Err(e) => error = Some(e),
+                    },
                     Err(e) => error = Some(e),
                 }
             }
@@ -196,18 +198,30 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
     /// Puts a located stop exactly on λ = `value`: Newton on the collocation
     /// equations with λ fixed (the border row λ = value) from the located
     /// point, then λ set to `value` (the corrector left it within rounding).
-    /// Keeps the located point if that fails (a value at a fold).
-    fn pin_parameter(&mut self, mut c: Corrected, value: f64) -> Corrected {
+    /// If that fails (a value at a fold, where λ fixed is singular), the
+    /// located point is kept, with λ set to `value`, only when it is on the
+    /// value to the Newton tolerance, |λ − value| ≤ tol (1 + |value|);
+    /// otherwise the Newton error (robust10b: before, the located point was
+    /// kept wherever the location tolerance had left it, and the run ended
+    /// with `ParameterValue` of a value nobody asked for).
+    fn pin_parameter(&mut self, mut c: Corrected, value: f64) -> Result<Corrected> {
         self.set_parameter_border();
         self.sys.border.target[0] = value;
         let mut x = c.x.clone();
-        if let Ok(stats) = newton(&mut self.sys, &mut x, self.opts, false) {
-            self.newton_iterations += u64::from(stats.iterations);
-            x.p[self.cont.parameter] = value;
-            c.x = x;
-            c.iterations += stats.iterations;
+        let q = self.cont.parameter;
+        match newton(&mut self.sys, &mut x, self.opts, false) {
+            Ok(stats) => {
+                self.newton_iterations += u64::from(stats.iterations);
+                x.p[q] = value;
+                c.x = x;
+                c.iterations += stats.iterations;
+            }
+            Err(_) if (c.x.p[q] - value).abs() <= self.opts.tol * (1.0 + value.abs()) => {
+                c.x.p[q] = value;
+            }
+            Err(e) => return Err(e),
         }
-        c
+        Ok(c)
     }
 
     /// The user event `i` at `x`; a non-finite value is an error.

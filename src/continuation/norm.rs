@@ -85,24 +85,58 @@ impl IntegralNorm {
         }
     }
 
-    /// ‖a − b‖ from the collocation values and the parameters `free`.
+    /// ‖a − b‖ from the collocation values and the parameters `free`,
+    /// computed scaled so that no intermediate overflows or underflows: with
+    /// T a power of two ≥ max |a_r − b_r|, ‖a − b‖ = T (Σ W_r ((a_r −
+    /// b_r)/T)²)^½ (the division is exact). If a difference itself
+    /// overflows (|a_r|, |b_r| near the largest double), the values are
+    /// halved first. `None` if the distance is beyond the largest double
+    /// or a value is not finite.
     pub(super) fn distance(
         &self,
         (a, ap): (&[f64], &[f64]),
         (b, bp): (&[f64], &[f64]),
         free: &[usize],
-    ) -> f64 {
-        let mut s = 0.0;
-        for ((w, x), y) in self.quadrature.iter().zip(a).zip(b) {
-            let d = x - y;
-            s += w * (d * d);
+    ) -> Option<f64> {
+        let pairs = || {
+            let values = self.quadrature.iter().zip(a).zip(b);
+            let values = values.map(|((w, x), y)| (*w, *x, *y));
+            let params = free.iter().map(|&q| (self.theta, ap[q], bp[q]));
+            values.chain(params)
+        };
+        if pairs().any(|(_, x, y)| !x.is_finite() || !y.is_finite()) {
+            return None;
         }
-        for &q in free {
-            let d = ap[q] - bp[q];
-            s += self.theta * (d * d);
+        let largest = |h: f64| pairs().fold(0.0_f64, |m, (_, x, y)| m.max((h * x - h * y).abs()));
+        let (h, dmax) = match largest(1.0) {
+            d if d.is_finite() => (1.0, d),
+            _ => (0.5, largest(0.5)),
+        };
+        if dmax == 0.0 {
+            return Some(0.0);
         }
-        s.sqrt()
+        let t = power_of_two_at_least(dmax);
+        let sum: f64 = pairs()
+            .map(|(w, x, y)| {
+                let d = (h * x - h * y) / t;
+                w * (d * d)
+            })
+            .sum();
+        let dist = sum.sqrt() * t / h;
+        dist.is_finite().then_some(dist)
     }
+}
+
+/// A power of two ≥ x (x finite and positive; 2¹⁰²³ for x above it): the
+/// smallest one, up to the rounding of log₂.
+fn power_of_two_at_least(x: f64) -> f64 {
+    let e = (x.log2().ceil() as i32).clamp(-1074, 1023);
+    let p = if e >= -1022 {
+        f64::from_bits(((e + 1023) as u64) << 52)
+    } else {
+        f64::from_bits(1_u64 << (e + 1074))
+    };
+    if p < x && e < 1023 { 2.0 * p } else { p }
 }
 
 impl Continuation {
@@ -112,10 +146,17 @@ impl Continuation {
     /// arclength the way [`Point::arclength`](super::Point::arclength) does (e.g. to join a point
     /// computed before the run to the branch).
     ///
+    /// The sum is scaled (the differences divided by a power of two above
+    /// the largest), so it is finite for every pair of finite solutions
+    /// whose distance is a double, and as accurate for solutions of size
+    /// 1e300 as of size 1.
+    ///
     /// # Errors
     /// [`Error::LengthMismatch`] or [`Error::InvalidCount`] unless both
     /// solutions have the dimension of the weights, the solver's points per
-    /// interval, and the same mesh; bad settings as [`Continuation::steps`].
+    /// interval, and the same mesh; [`Error::Overflow`] if the distance is
+    /// beyond the largest double (or a value is not finite); bad settings as
+    /// [`Continuation::steps`].
     pub fn distance(&self, a: &Solution, b: &Solution) -> Result<f64> {
         let n = a.dim();
         self.validate(n, a.parameters().len())?;
@@ -147,11 +188,21 @@ impl Continuation {
         let mut free = self.solver.free().to_vec();
         free.push(self.parameter);
         let (ya, yb) = (a.collocation_values(), b.collocation_values());
-        Ok(norm.distance(
+        norm.distance(
             (ya.as_slice(), a.parameters()),
             (yb.as_slice(), b.parameters()),
             &free,
-        ))
+        )
+        .ok_or_else(|| Error::Overflow {
+            quantity: "distance ‖a − b‖",
+            name: "largest |component| of a and b",
+            value: ya
+                .iter()
+                .chain(yb.iter())
+                .chain(a.parameters())
+                .chain(b.parameters())
+                .fold(0.0, |m: f64, v| m.max(v.abs())),
+        })
     }
 }
 

@@ -42,7 +42,8 @@ pub enum Termination {
         /// [`Error::NewtonDiverged`] (the corrector),
         /// [`Error::SingularJacobian`], [`Error::NonFinite`] (the problem
         /// returned NaN or ∞), or [`Error::StepAngleTooLarge`] (the tangent
-        /// kept turning by more than the maximum angle).
+        /// kept turning by more than the maximum angle); for a rod pull
+        /// also [`Error::NotARod`] (a point with |Δz| > 1).
         error: Error,
     },
 }

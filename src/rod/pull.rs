@@ -554,7 +554,9 @@ impl Pull {
     ///
     /// A run that cannot go on (Newton failure at the smallest step, the
     /// step limit, the observer) keeps its points and says why in
-    /// [`PullRun::termination`].
+    /// [`PullRun::termination`]; a point with |Δz| > 1 + tolerance (no
+    /// rod: a fixed mesh too coarse for the shape) ends it with
+    /// `Failed` and [`Error::NotARod`], the point not kept.
     ///
     /// # Errors
     /// As [`Pull::start`]: bad settings, an unreachable target, or a rest
@@ -563,7 +565,7 @@ impl Pull {
         let clock = Instant::now();
         let start = self.start()?;
         let mut trace = start.steps()?;
-        let mut recorder = Recorder::new(&start, self.locate_folds);
+        let mut recorder = Recorder::new(&start, self.locate_folds, self.tolerance);
         let termination = drive_into(&mut trace, &mut observer, |p| recorder.record(&p));
         let estimate = trace.estimate();
         Ok(PullRun {
@@ -629,11 +631,14 @@ struct Recorder {
     locate_folds: bool,
     /// dλ/ds at the last curve point.
     last_dl: f64,
+    /// The pull's tolerance: the slack of |Δz| ≤ 1 (robust10b).
+    tolerance: f64,
 }
 
 impl Recorder {
-    fn new(start: &Start, locate_folds: bool) -> Self {
+    fn new(start: &Start, locate_folds: bool, tolerance: f64) -> Self {
         Self {
+            tolerance,
             rod: start.rod,
             curve: ForceExtension::new("rod", "arclength", start.rod.scale()),
             folds: Vec::new(),
@@ -645,6 +650,14 @@ impl Recorder {
 
     fn record(&mut self, p: &Point) -> Result<()> {
         let eq = Equilibrium::new(self.rod, p.solution().clone())?;
+        // (robust10b) |Δz| > 1 beyond the tolerance is no rod: the run ends
+        // `Failed` with `NotARod` instead of keeping the point
+        if eq.extension().abs() > 1.0 + self.tolerance {
+            return Err(Error::NotARod {
+                extension: eq.extension(),
+                intervals: p.solution().mesh().intervals() as u64,
+            });
+        }
         let dl = p.dparameter_ds();
         let at = ForcePoint {
             extension: eq.extension(),

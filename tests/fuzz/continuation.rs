@@ -33,6 +33,8 @@ struct Drawn {
     max_steps: usize,
     stops: Vec<f64>,
     events: usize,
+    /// The settings `Continuation`'s `Debug` does not show.
+    hidden: String,
 }
 
 fn draw(g: &mut Gen) -> Drawn {
@@ -62,6 +64,8 @@ fn draw(g: &mut Gen) -> Drawn {
     valid &= angle > 0.0 && angle <= core::f64::consts::PI;
     let locate = pick(g, 1e-10, 0.0, 1.0);
     valid &= locate > 0.0 && locate.is_finite();
+    let mut hidden =
+        format!("parameter_weight {theta:e}, max_angle {angle:e}, locate_tolerance {locate:e}");
     cont = cont
         .step(ds)
         .step_bounds(ds_min, ds_max)
@@ -79,12 +83,14 @@ fn draw(g: &mut Gen) -> Drawn {
     if hostile && g.u64().is_multiple_of(3) {
         let max_newton = g.u32(12);
         valid &= max_newton >= 1;
+        hidden += &format!(", max_newton {max_newton}");
         cont = cont.max_newton(max_newton);
     }
     if hostile && g.u64().is_multiple_of(3) {
         let len = (g.u64() % 4) as usize;
         let w: Vec<f64> = (0..len).map(|_| g.arg(0.0, 1e3)).collect();
         valid &= len == 2 && w.iter().all(|v| *v >= 0.0 && v.is_finite());
+        hidden += &format!(", weights {w:?}");
         cont = cont.weights(&w);
     }
     if hostile && g.u64().is_multiple_of(4) {
@@ -117,6 +123,10 @@ fn draw(g: &mut Gen) -> Drawn {
             g.any_f64()
         };
         let constant = g.u64().is_multiple_of(4);
+        hidden += &format!(
+            ", event {i}: {} {level:e}",
+            if constant { "constant" } else { "y′(0) −" }
+        );
         cont = cont.stop_when(move |sol: &Solution| {
             if constant {
                 level
@@ -131,6 +141,7 @@ fn draw(g: &mut Gen) -> Drawn {
         max_steps,
         stops,
         events,
+        hidden,
     }
 }
 
@@ -235,7 +246,7 @@ pub fn fuzz(g: &mut Gen, r: &mut Report, calls: u64) {
     let problem = Bratu::default();
     while r.calls < calls {
         let d = draw(g);
-        let what = || format!("{:?} on Bratu", d.cont);
+        let what = || format!("{:?} ({}) on Bratu", d.cont, d.hidden);
         // more steps than the budget: an observer stops the run
         let limit = MAX_STEPS + 1;
         let (seen, finished) = (Cell::new(0), Cell::new(false));

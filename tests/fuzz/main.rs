@@ -110,11 +110,16 @@ fn bvp_huge_counts() {
 
 /// The long run documented in docs/ACCURACY.md (call counts printed):
 /// every module runs even when an earlier one fails; the test fails at the
-/// end if any did.
+/// end if any did. `HOCKLE_FUZZ_ONLY=<module>` runs one module (with its
+/// long-run seed), `HOCKLE_FUZZ_FACTOR=k` k× the CI budget instead of 30×.
 #[test]
 #[ignore = "long: about 30× the CI budget (minutes)"]
 fn long_run() {
-    const FACTOR: u64 = 30;
+    let factor: u64 = std::env::var("HOCKLE_FUZZ_FACTOR")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(30);
+    let only = std::env::var("HOCKLE_FUZZ_ONLY").ok();
     let mut failed = Vec::new();
     for (i, (name, calls, f)) in [
         (
@@ -133,7 +138,10 @@ fn long_run() {
     .into_iter()
     .enumerate()
     {
-        let one = std::panic::catch_unwind(|| run(name, 1000 + i as u64, calls * FACTOR, f));
+        if only.as_ref().is_some_and(|o| o != name) {
+            continue;
+        }
+        let one = std::panic::catch_unwind(|| run(name, 1000 + i as u64, calls * factor, f));
         if one.is_err() {
             failed.push(name);
         }
@@ -143,13 +151,39 @@ fn long_run() {
 
 /// Every value type of the `special` layer can cross threads (the
 /// elastica and helix types are asserted in their modules, the
-/// continuation's in tests/continuation/observer.rs, the rod's and the
-/// spring's models in tests/rod/input.rs), and the bvp and result types
-/// asserted nowhere else (issue 10).
+/// continuation's runs in tests/continuation/observer.rs, the rod's and
+/// the spring's models and the stability and contact types in
+/// tests/rod/input.rs), and the bvp, fold-curve, error-estimate and result
+/// types asserted nowhere else (issue 10).
 const _: fn() = || {
     fn send_sync<T: Send + Sync>() {}
     send_sync::<hockle::special::Modulus>();
     send_sync::<hockle::special::Jacobi>();
+    send_sync::<hockle::special::JacobiDm>();
+    send_sync::<hockle::special::FixedModulus>();
+    send_sync::<hockle::bvp::classic::Linear>();
+    send_sync::<hockle::bvp::classic::Bratu>();
+    send_sync::<hockle::bvp::classic::BratuLength>();
+    send_sync::<hockle::bvp::classic::Troesch>();
+    send_sync::<hockle::bvp::classic::Quadratic>();
+    send_sync::<hockle::bvp::classic::Euler>();
+    send_sync::<hockle::bvp::classic::Eigen>();
+    send_sync::<hockle::bvp::classic::Coupled13>();
+    send_sync::<hockle::continuation::ErrorEstimate>();
+    send_sync::<hockle::continuation::Output>();
+    send_sync::<hockle::continuation::FoldContinuation>();
+    send_sync::<hockle::continuation::FoldCurve>();
+    send_sync::<hockle::continuation::FoldPoint>();
+    send_sync::<hockle::continuation::FoldPointKind>();
+    send_sync::<hockle::curve::Slope>();
+    send_sync::<hockle::ForceExtension>();
+    send_sync::<hockle::ForceScale>();
+    send_sync::<hockle::Target>();
+    send_sync::<hockle::stability::Stability>();
+    send_sync::<hockle::stability::IndexCrossing>();
+    send_sync::<hockle::rod::SecondVariation>();
+    send_sync::<hockle::rod::Contact>();
+    send_sync::<hockle::rod::Start>();
     send_sync::<hockle::bvp::Mesh>();
     send_sync::<hockle::bvp::Collocation>();
     send_sync::<hockle::bvp::Solution>();

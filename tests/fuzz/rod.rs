@@ -276,6 +276,7 @@ pub fn check_pull(r: &mut Report, run: &PullRun, max_steps: usize, what: &dyn Fn
                         | Error::SingularJacobian { .. }
                         | Error::NonFinite { .. }
                         | Error::StepAngleTooLarge { .. }
+                        | Error::NotARod { .. }
                 )
         }
         _ => false,

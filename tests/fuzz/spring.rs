@@ -104,38 +104,20 @@ fn model_refusal(e: &Error) -> bool {
 }
 
 /// Findings of this suite in the models, not fixed here (they are not
-/// input checks; /work/notes/fuzz10.md reports them to the lead), each
-/// recognised as narrowly as the failure allows so that anything else
-/// still fails:
+/// input checks; docs/ACCURACY.md lists them), recognised as narrowly as
+/// the failure allows so that anything else still fails: a model that
+/// says it reached its target with a last point not on it.
 ///
-/// - `helix_theta`: `HelixModel::pull_to` on a spring with θ0 < 1e-7 rad
-///   (cos θ0 rounds to 1) samples θ = acos(1) = 0 and fails with
-///   `InvalidArgument { name: "theta" }`, a name the user never gave.
-fn known_refusal(model: &str, spring: &Spring, e: &Error) -> bool {
-    model == "helix"
-        && spring.helix_angle() < 1e-7
-        && matches!(e, Error::InvalidArgument { name: "theta", .. })
-}
-
-/// Findings (continued): a model that says it reached its target with a
-/// last point not on it.
-///
-/// - `helix_subnormal`: `HelixModel::pull_to(Target::Force(f))` for forces
-///   so large that the helix angle at f is subnormal (f ≳ 1e300): the
-///   bisection in θ has fewer than 53 bits there, and the last force is off.
-///
-/// - `subnormal_force`: a spring whose forces are subnormal (B ≲ 1e-290):
-///   the last force has fewer than 53 bits and F/((2πn)²B) is off.
-///
-/// (The elastica model's extension targets were another, fixed: see
-/// `found::elastica_extension_target_is_met_or_refused`.)
+/// - `subnormal_force`: the elastica model of a spring whose forces are
+///   subnormal (B ≲ 1e-290): the last force has fewer than 53 bits and
+///   F/((2πn)²B) is off. (The helix model now meets its target to
+///   `HelixModel::FORCE_ACCURACY` or refuses it, see
+///   `found::helix_model_meets_a_force_or_says_it_cannot`; the elastica
+///   model's extension targets were another, fixed: see
+///   `found::elastica_extension_target_is_met_or_refused`.)
 fn known_miss(model: &str, resp: &Response) -> bool {
     let last = resp.curve().points().last();
-    let subnormal_force = last.is_some_and(|p| p.force.abs() < 1e-290);
-    subnormal_force
-        || (model == "helix"
-            && matches!(resp.target(), Target::Force(_))
-            && last.is_some_and(|p| p.parameter.abs() < f64::MIN_POSITIVE))
+    model == "elastica" && last.is_some_and(|p| p.force.abs() < 1e-290)
 }
 
 /// The models' constructors with hostile counts and `pull_to` with hostile
@@ -206,7 +188,10 @@ fn models(g: &mut Gen, r: &mut Report, spring: &Spring) {
                     target: Target::Extension(_),
                     ..
                 } if model.name() == "elastica" => true,
-                Error::UnreachableTarget { .. } => !valid_target,
+                // (helix) a force whose physical value f·(2πn)²B overflows
+                Error::UnreachableTarget { .. } => {
+                    !valid_target || !force_in_range(t, spring.force_scale())
+                }
                 // the elastica trace refuses a subnormal force limit
                 // (elastica docs: not met to 1e-9 in double precision)
                 Error::InvalidArgument {
@@ -214,9 +199,7 @@ fn models(g: &mut Gen, r: &mut Report, spring: &Spring) {
                     value,
                     ..
                 } => model.name() == "elastica" && value.abs() < f64::MIN_POSITIVE,
-                ref e => {
-                    model_refusal(e) || !valid_target || known_refusal(model.name(), spring, e)
-                }
+                ref e => model_refusal(e) || !valid_target,
             },
             || format!("{}: {e}", what()),
         ),
@@ -344,7 +327,11 @@ fn rod_pull(g: &mut Gen, r: &mut Report, spring: &Spring, t: Target, valid_targe
                 Termination::Stopped => seen.get() >= ROD_POINTS,
                 Termination::ParameterValue(_) => true,
                 Termination::Failed { error, .. } => {
-                    model_refusal(error) || matches!(error, Error::StepAngleTooLarge { .. })
+                    model_refusal(error)
+                        || matches!(
+                            error,
+                            Error::StepAngleTooLarge { .. } | Error::NotARod { .. }
+                        )
                 }
                 _ => false,
             };
