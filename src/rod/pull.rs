@@ -136,6 +136,18 @@ impl PullRun {
         matches!(self.termination, Termination::ParameterValue(_))
     }
 
+    /// Whether the run's estimated errors (of its folds and of its curve,
+    /// [`Self::estimate`]) are within the tolerance it was asked for. A run
+    /// can reach its target without meeting it: a fixed mesh too coarse
+    /// for the tolerance, or a mesh that reached its interval limit (the
+    /// estimate is then large, or ∞ where the check against the halved mesh
+    /// failed).
+    #[must_use]
+    pub fn meets_tolerance(&self) -> bool {
+        let e = self.estimate;
+        e.located.max(e.curve()) <= self.tolerance
+    }
+
     /// Accepted continuation steps.
     #[must_use]
     pub fn steps(&self) -> usize {
@@ -179,6 +191,14 @@ impl core::fmt::Display for PullRun {
             self.estimate,
             self.points_per_interval
         )?;
+        if !self.meets_tolerance() {
+            writeln!(
+                f,
+                "  the tolerance {:.0e} is NOT met: estimated error {:.1e}",
+                self.tolerance,
+                self.estimate.located.max(self.estimate.curve())
+            )?;
+        }
         for fold in &self.folds {
             writeln!(
                 f,

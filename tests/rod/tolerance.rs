@@ -143,6 +143,7 @@ fn check_scene(rod: Rod, target: Target, tolerances: &[f64]) {
         let run = Pull::new(rod, target).tolerance(tol).run(()).unwrap();
         assert!(run.reached_target(), "{run}");
         let estimate = run.estimate();
+        assert!(run.meets_tolerance(), "{run}");
         if !run.folds().is_empty() {
             check_honest(
                 &format!("{run} folds"),
@@ -224,4 +225,31 @@ fn tight_tolerance_on_a_fixed_mesh_keeps_a_finite_estimate() {
     assert!(run.reached_target(), "{run}");
     let e = run.estimate();
     assert!(e.mesh.is_finite() && e.curve().is_finite(), "{run}");
+}
+
+/// A run that reaches its target on a mesh too coarse for its tolerance
+/// says so: its true error (the end extension against a fine fixed mesh,
+/// 40 intervals with m = 7) is above the tolerance, and so is its estimate.
+#[test]
+fn a_coarse_fixed_mesh_says_it_misses_the_tolerance() {
+    let target = Target::Force(0.3);
+    let coarse = Pull::new(rod(89.8, 10.0), target)
+        .tolerance(1e-8)
+        .intervals(6)
+        .points(3)
+        .run(())
+        .unwrap();
+    let fine = Pull::new(rod(89.8, 10.0), target)
+        .tolerance(1e-8)
+        .intervals(40)
+        .points(7)
+        .run(())
+        .unwrap();
+    assert!(coarse.reached_target() && fine.reached_target());
+    let end = |r: &PullRun| r.curve().points().last().unwrap().extension;
+    let truth = (end(&coarse) - end(&fine)).abs();
+    assert!(truth > 1e-8, "{truth:e}: pick a coarser mesh");
+    assert!(!coarse.meets_tolerance(), "{coarse}");
+    assert!(coarse.to_string().contains("NOT met"), "{coarse}");
+    assert!(fine.meets_tolerance(), "{fine}");
 }
