@@ -10,6 +10,7 @@ mod input;
 mod jacobians;
 mod phase_diagram;
 mod planar;
+mod planar_guess;
 mod stability;
 mod tolerance;
 mod unstressed;

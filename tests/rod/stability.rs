@@ -19,6 +19,8 @@ use hockle::spring::{Control, Direction, RodModel, Spring, Target};
 use hockle::stability::{IndexCrossing, carried};
 use hockle::{FoldKind, Stiffness};
 
+use super::planar_guess::planar_guess;
+
 /// Every how many curve points the direct test samples the paper's curve
 /// (about 60 samples on the default pull's ~370 points).
 const EVERY: usize = 6;
@@ -182,39 +184,6 @@ fn the_carried_index_agrees_with_the_direct_test_away_from_folds() {
     // The comparison covers the stable and the unstable stretches.
     assert!(compared.iter().all(|&n| n > 50), "{compared:?}");
     assert!(unstable_seen.iter().all(|&n| n >= 3), "{unstable_seen:?}");
-}
-
-/// The rod's state for the planar elastica `e` at θ0 = 90° (as in
-/// tests/rod/diamonds.rs), a guess that Newton polishes.
-fn planar_guess(e: Elastica) -> impl Fn(f64) -> [f64; 13] {
-    let samples = 4001;
-    let c = e.centreline(samples).unwrap();
-    let kappa0 = 8.0 * PI;
-    let step = 1.0 / (samples - 1) as f64;
-    let mut phi = Vec::with_capacity(samples);
-    for i in 0..samples {
-        let j = hockle::special::jacobi(
-            e.omega() * (e.start() + i as f64 * step),
-            e.elliptic_modulus(),
-        );
-        let raw = (-2.0 * j.sn * j.cn).atan2(2.0 * j.sn * j.sn - 1.0);
-        let prev: f64 = phi.last().copied().unwrap_or(raw);
-        phi.push(prev + (raw - prev + PI).rem_euclid(2.0 * PI) - PI);
-    }
-    let shift = ((PI - phi[samples / 2]) / (2.0 * PI)).round() * 2.0 * PI;
-    let force = e.force();
-    move |s: f64| {
-        let i = ((s / step).round() as usize).min(samples - 1);
-        let t = phi[i] + shift;
-        let mut y = [0.0; 13];
-        y[0] = -c[i].x;
-        y[2] = c[i].y;
-        y[3] = (t / 2.0).cos();
-        y[5] = (t / 2.0).sin();
-        y[9] = force;
-        y[11] = e.curvature(i as f64 * step) - kappa0;
-        y
-    }
 }
 
 #[test]
