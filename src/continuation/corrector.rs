@@ -127,12 +127,15 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         let stats = newton(&mut self.sys, &mut x, self.opts, reuse)?;
         self.newton_iterations += u64::from(stats.iterations);
         // Without branch-point detection the determinant is not needed: when
-        // the chord corrector converged fast on the old factorisation, keep
-        // it and refine the tangent on it instead of factorising again.
+        // the chord corrector converged fast on the old factorisation (with
+        // a tolerance: on any factorisation it made), keep it and refine the
+        // tangent on it instead of factorising again.
+        let near = match self.cont.tolerance {
+            Some(_) => reuse || stats.jacobians > 0,
+            None => reuse && stats.jacobians == 0 && stats.iterations <= 4,
+        };
         if !self.cont.branch_points
-            && reuse
-            && stats.jacobians == 0
-            && stats.iterations <= 4
+            && near
             && let Some(mut t) = self.refined_tangent(&x)
         {
             let nrm = self.norm(&t);
@@ -162,10 +165,14 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
     /// The tangent at `x` without a new factorisation: iterative
     /// refinement of [F_x(x); τ₀ᵀ] τ = e preconditioned by the current
     /// (chord) factorisation, with F_x(x)τ by
-    /// [`residual_derivative`](Self::residual_derivative). `None` when it
-    /// does not contract.
+    /// [`residual_derivative`](Self::residual_derivative). The refinement
+    /// stops at a correction of 1e-10, or where the difference quotient's
+    /// rounding stalls it (about 1e-8 on the rod) if that is below
+    /// [`tangent_tolerance`](Self::tangent_tolerance); `None` when it does
+    /// not get there.
     pub(super) fn refined_tangent(&mut self, x: &State) -> Option<State> {
         let free = self.sys.free.clone();
+        let enough = self.tangent_tolerance();
         let mut t = self.t0.clone();
         let mut work = self.difference(x);
         let mut d = self.sys.zero_state();
@@ -175,16 +182,27 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
             let last = work.out.dense.len() - 1;
             work.out.dense[last] -= 1.0;
             self.sys.solve(&work.out, &mut d).ok()?;
-            t.axpy(1.0, &d, &free);
             let nd = scaled_norm(&d, &t, &free);
+            if nd > 0.25 * prev {
+                // stalled: t is as good as the difference quotient allows
+                return (prev <= enough).then_some(t);
+            }
+            t.axpy(1.0, &d, &free);
             if nd <= 1e-10 {
                 return Some(t);
             }
-            if nd > 0.25 * prev {
-                return None;
-            }
             prev = nd;
         }
-        None
+        (prev <= enough).then_some(t)
+    }
+
+    /// The correction below which a tangent is good enough: 1e-10, or with
+    /// a tolerance a tenth of it (a slope error δ moves a step's Hermite
+    /// interpolant by at most h δ / 4 in the diagram's plane, with steps
+    /// h < 1).
+    fn tangent_tolerance(&self) -> f64 {
+        self.cont
+            .tolerance
+            .map_or(1e-10, |tol| (0.1 * tol).max(1e-10))
     }
 }

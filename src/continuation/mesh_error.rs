@@ -45,8 +45,8 @@ pub struct ErrorEstimate {
     /// The largest error of a located point (fold, branch point, stop,
     /// event) measured against the halved mesh.
     pub located: f64,
-    /// The largest interpolation error estimate of a step's cubic Hermite
-    /// interpolant.
+    /// The largest interpolation error estimate of a step's quintic
+    /// Hermite interpolant.
     pub interpolation: f64,
     /// Points checked against the halved mesh.
     pub checks: u32,
@@ -196,7 +196,14 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
                 (&mut xcol, &mut tcol),
             );
             let mut fine = guess.clone();
-            newton(&mut h.sys, &mut fine, opts, false)?;
+            // the last check's factorisation (a few steps back, same mesh)
+            // starts a chord corrector; Newton refreshes it when it
+            // contracts too slowly
+            let reuse = h.sys.is_factored() && h.sys.factor_border().is_ok();
+            newton(&mut h.sys, &mut fine, opts, reuse)?;
+            if !fold {
+                return Ok((fine, f64::NAN));
+            }
             h.sys.factor(&fine)?;
             let tangent = border_rhs_solution(&mut h.sys)?;
             Ok((fine, tangent.p[q]))
@@ -303,6 +310,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         self.det0 = det;
         self.factored_at_x0 = true;
         self.halved = None;
+        self.jet0 = None;
         self.estimate.remeshes += 1;
         self.estimate.intervals = intervals;
         self.estimate.max_intervals = self.estimate.max_intervals.max(intervals);
