@@ -45,15 +45,7 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         let mut last = f64::INFINITY;
         for _ in 0..6 {
             self.residual_derivative(x, &z, &mut work).ok()?;
-            for (r, v) in work
-                .out
-                .stage
-                .iter_mut()
-                .chain(work.out.cont.iter_mut())
-                .chain(work.out.bc.iter_mut())
-                .chain(work.out.dense.iter_mut())
-                .zip(w.stage.iter().chain(&w.cont).chain(&w.bc).chain(&w.dense))
-            {
+            for (r, v) in work.out.rows_mut().zip(w.rows()) {
                 *r += v;
             }
             self.sys.solve(&work.out, &mut d).ok()?;

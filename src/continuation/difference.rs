@@ -28,45 +28,45 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         }
     }
 
-    /// F_x(x)·t ≈ (F(x + εt) − F(x − εt)) / 2ε into `work.out` (every
-    /// residual row, the border included), with
-    /// ε = 1e-6 (1 + ‖y‖∞) / ‖t‖∞ over the solution values y of x and the
-    /// components of t: truncation O(ε²) and rounding O(u/ε) both about
-    /// 1e-12 relative.
-    pub(super) fn residual_derivative(
+    /// F(x + εt) into `work.out` and F(x − εt) into `work.back`, with
+    /// ε = `relative` (1 + ‖y‖∞) / ‖t‖∞ over the solution values y of x and
+    /// the components of t; returns ε.
+    fn residuals_at_both_sides(
         &mut self,
         x: &State,
         t: &State,
+        relative: f64,
         work: &mut Difference,
-    ) -> Result<()> {
+    ) -> Result<f64> {
         let free = &self.sys.free;
         let xn = x.y.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
         let tn = t.y.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
         let tn = free.iter().fold(tn, |a, &q| a.max(t.p[q].abs()));
-        let eps = 1e-6 * (1.0 + xn) / tn.max(1e-300);
+        let eps = relative * (1.0 + xn) / tn.max(1e-300);
         work.plus.clone_from(x);
         work.plus.axpy(eps, t, free);
         work.minus.clone_from(x);
         work.minus.axpy(-eps, t, free);
         self.sys.residual(&work.plus, &mut work.out)?;
         self.sys.residual(&work.minus, &mut work.back)?;
+        Ok(eps)
+    }
+
+    /// F_x(x)·t ≈ (F(x + εt) − F(x − εt)) / 2ε into `work.out` (every
+    /// residual row, the border included), with
+    /// ε = 1e-6 (1 + ‖y‖∞) / ‖t‖∞ over the solution values y of x and the
+    /// components of t: truncation O(ε²) and rounding O(u/ε), about 1e-12
+    /// of the residual's terms (the rod's terms are large: a tangent refined
+    /// with it stalls near 1e-8, measured).
+    pub(super) fn residual_derivative(
+        &mut self,
+        x: &State,
+        t: &State,
+        work: &mut Difference,
+    ) -> Result<()> {
+        let eps = self.residuals_at_both_sides(x, t, 1e-6, work)?;
         let inv = 0.5 / eps;
-        let out = &mut work.out;
-        let back = &work.back;
-        for (a, b) in out
-            .stage
-            .iter_mut()
-            .chain(out.cont.iter_mut())
-            .chain(out.bc.iter_mut())
-            .chain(out.dense.iter_mut())
-            .zip(
-                back.stage
-                    .iter()
-                    .chain(&back.cont)
-                    .chain(&back.bc)
-                    .chain(&back.dense),
-            )
-        {
+        for (a, b) in work.out.rows_mut().zip(work.back.rows()) {
             *a = (*a - b) * inv;
         }
         Ok(())
@@ -83,45 +83,14 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         t: &State,
         work: &mut Difference,
     ) -> Result<()> {
-        let free = &self.sys.free;
-        let xn = x.y.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
-        let tn = t.y.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
-        let tn = free.iter().fold(tn, |a, &q| a.max(t.p[q].abs()));
-        let eps = 1e-4 * (1.0 + xn) / tn.max(1e-300);
-        work.plus.clone_from(x);
-        work.plus.axpy(eps, t, free);
-        work.minus.clone_from(x);
-        work.minus.axpy(-eps, t, free);
-        self.sys.residual(&work.plus, &mut work.out)?;
-        self.sys.residual(&work.minus, &mut work.back)?;
+        let eps = self.residuals_at_both_sides(x, t, 1e-4, work)?;
         self.sys.residual(x, &mut work.centre)?;
         let inv = 1.0 / (eps * eps);
-        let out = &mut work.out;
         let (back, centre) = (&work.back, &work.centre);
-        for ((a, b), c) in out
-            .stage
-            .iter_mut()
-            .chain(out.cont.iter_mut())
-            .chain(out.bc.iter_mut())
-            .chain(out.dense.iter_mut())
-            .zip(
-                back.stage
-                    .iter()
-                    .chain(&back.cont)
-                    .chain(&back.bc)
-                    .chain(&back.dense),
-            )
-            .zip(
-                centre
-                    .stage
-                    .iter()
-                    .chain(&centre.cont)
-                    .chain(&centre.bc)
-                    .chain(&centre.dense),
-            )
-        {
+        for ((a, b), c) in work.out.rows_mut().zip(back.rows()).zip(centre.rows()) {
             *a = (*a + b - 2.0 * c) * inv;
         }
+        let out = &mut work.out;
         let nd = out.dense.len();
         let rows = self.sys.border.rows;
         out.dense[nd - rows..].fill(0.0);

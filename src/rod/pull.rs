@@ -704,29 +704,20 @@ impl Recorder {
         if !located {
             let [dl, dg] = p.diagram_slope();
             let scale = self.curve.force_scale();
-            let slope = match self.rod.control() {
-                Control::Force => Slope {
-                    extension: dg,
-                    force: dl * scale,
-                },
-                Control::Extension => Slope {
-                    extension: dl,
-                    force: dg * scale,
-                },
+            // (Δz, F) from the diagram's (λ, g): (F/scale, Δz) under force
+            // control, (Δz, F_z/scale) under extension control
+            let control = self.rod.control();
+            let physical = |[l, g]: [f64; 2]| match control {
+                Control::Force => (g, l * scale),
+                Control::Extension => (l, g * scale),
             };
+            let (extension, force) = physical([dl, dg]);
+            let slope = Slope { extension, force };
             match p.diagram_curvature() {
-                Some([cl, cg]) => {
-                    let curvature = match self.rod.control() {
-                        Control::Force => Curvature {
-                            extension: cg,
-                            force: cl * scale,
-                        },
-                        Control::Extension => Curvature {
-                            extension: cl,
-                            force: cg * scale,
-                        },
-                    };
-                    self.curve.push_with_curvature(at, slope, curvature);
+                Some(c) => {
+                    let (extension, force) = physical(c);
+                    self.curve
+                        .push_with_curvature(at, slope, Curvature { extension, force });
                 }
                 None => self.curve.push_with_slope(at, slope),
             }

@@ -98,12 +98,25 @@ pub(crate) struct Residual {
 
 impl Residual {
     pub(crate) fn max_norm(&self) -> f64 {
+        self.rows().fold(0.0_f64, |m, v| m.max(v.abs()))
+    }
+
+    /// Every row: stage, continuity, boundary, dense.
+    pub(crate) fn rows(&self) -> impl Iterator<Item = &f64> {
         self.stage
             .iter()
             .chain(&self.cont)
             .chain(&self.bc)
             .chain(&self.dense)
-            .fold(0.0_f64, |m, v| m.max(v.abs()))
+    }
+
+    /// Every row, mutable, in the order of [`rows`](Self::rows).
+    pub(crate) fn rows_mut(&mut self) -> impl Iterator<Item = &mut f64> {
+        self.stage
+            .iter_mut()
+            .chain(self.cont.iter_mut())
+            .chain(self.bc.iter_mut())
+            .chain(self.dense.iter_mut())
     }
 }
 
