@@ -30,6 +30,7 @@
 //! ```
 
 mod answer;
+mod bracket;
 mod choice;
 mod contact;
 mod elastica_model;

@@ -4,6 +4,7 @@
 mod common;
 
 mod bad_input;
+mod bracket;
 mod cascade;
 mod choice;
 mod contact;
