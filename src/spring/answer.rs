@@ -159,7 +159,9 @@ pub enum Reason {
 /// The error is the model's own estimate: for the rod, the largest
 /// distance (max norm in (Δz, F/((2πn)²B))) between what it returns (its
 /// points, folds and interpolant, and the values read off it) and the exact
-/// curve ([`crate::rod::PullRun::estimate`]); for the spring constant, a
+/// curve ([`crate::rod::PullRun::estimate`]); for a small pull answered by
+/// the rod's tangent, the gap between that tangent and the exact helix
+/// ([`Reason::Bracketed`]), which bounds it; for the spring constant, a
 /// relative error.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Answer {

@@ -72,6 +72,12 @@ fn small_pulls_are_answered_by_the_tangent_within_the_gap() {
             panic!("{answer}");
         };
         assert_eq!(gap, answer.estimated_error());
+        assert!(answer.meets_tolerance(), "{answer}");
+        assert!(
+            answer.why().starts_with("linear response: "),
+            "{}",
+            answer.why()
+        );
         let Value::Curve(line) = answer.value() else {
             panic!("{answer}");
         };
