@@ -27,9 +27,11 @@
 //!   whose lever decays over √(B_spring/F), so the lever, and with it the
 //!   compliance, only falls (P-δ stiffening); the helix stiffens too while
 //!   it stays left of the tangent.
-//! - **No fold.** A max-force fold turns the rod back in f while Δz still
-//!   grows, which would cross the tangent: inside the bracket the rod is a
-//!   graph over f, with no pop-out.
+//! - **Before the first fold.** Both sides are argued for the rod's first
+//!   stretch; the rod is not run, so the bracket is used only below a load
+//!   under every first pop-out the cascade maps know ([`MAX_LOAD`]), for
+//!   2 … 16 coils, at tolerances up to the rod's own limit of 0.1, and
+//!   never for the pop-outs themselves.
 //!
 //! Where the helix softens toward its own fold and reaches the tangent
 //! (θ0 near 90° with A/B ≫ 1 at larger loads), the bracket is refused.
@@ -57,6 +59,18 @@ const SAMPLES: usize = 400;
 /// 4e-2 there; with two coils it does not).
 const MIN_COILS: u32 = 2;
 
+/// The bracket is argued before the rod's first fold, and is not checked
+/// against one (the rod is not run): it is used only below this load
+/// F/((2πn)²B), under the lowest first pop-out of the committed cascade
+/// maps (docs/data/phase_diagram_n{2,3,4,6}.csv: 0.51, 0.43, 0.38, 0.33,
+/// at ν = −0.9, A/B = 100) with a margin, and only up to [`MAX_COILS`]
+/// coils: the lowest pop-out falls with n (about as n^−0.4 over those
+/// maps, which would reach 0.2 near n = 20).
+const MAX_LOAD: f64 = 0.2;
+
+/// See [`MAX_LOAD`].
+const MAX_COILS: u32 = 16;
+
 /// The linear response with its bound, for one target.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Bracket {
@@ -73,13 +87,14 @@ pub(super) struct Bracket {
 impl Spring {
     /// The bracket up to `target` (module docs), `None` where it does not
     /// hold or cannot be shown to: not a pull, intrinsic strains not the
-    /// helix's, fewer than two coils, the helix turning back in force or reaching the tangent.
+    /// helix's, fewer than two or more than 16 coils, a load above 0.2, the
+    /// helix turning back in force or reaching the tangent.
     ///
     /// On the helix's samples f_0 < f_1 < … (Δz_h increasing with f), for
     /// f ∈ [f_i, f_{i+1}] the gap cos θ0 + f/k − Δz_h(f) is at most
     /// cos θ0 + f_{i+1}/k − Δz_h(f_i): the bound is the largest of those.
     pub(super) fn bracket(&self, target: Target) -> Result<Option<Bracket>> {
-        if !self.is_helical() || self.coils() < MIN_COILS {
+        if !self.is_helical() || !(MIN_COILS..=MAX_COILS).contains(&self.coils()) {
             return Ok(None);
         }
         let rest = self.helix_angle().cos();
@@ -103,6 +118,9 @@ impl Spring {
             .iter()
             .map(|p| (p.extension, p.force / scale))
             .collect();
+        if points.last().is_none_or(|&(_, f)| f > MAX_LOAD) {
+            return Ok(None);
+        }
         let mut bound = 0.0_f64;
         for w in points.windows(2) {
             let ((x0, f0), (x1, f1)) = (w[0], w[1]);
@@ -123,14 +141,16 @@ impl Bracket {
     }
 
     /// The answer of the linear response to `question` (a pull inside the
-    /// bracket).
+    /// bracket); `None` for the questions it does not answer: pop-outs
+    /// (the bracket argues there is none, but that is the rod's to show)
+    /// and the spring constant (no pull).
     pub(super) fn answer(
         &self,
         spring: &Spring,
         question: &Question,
         tolerance: f64,
         clock: Instant,
-    ) -> Answer {
+    ) -> Option<Answer> {
         let value = match question {
             Question::ForcesAt(extensions) => Value::Forces(
                 extensions
@@ -141,15 +161,10 @@ impl Bracket {
             Question::ExtensionsAt(forces) => {
                 Value::Extensions(forces.iter().map(|f| vec![self.extension(*f)]).collect())
             }
-            // no fold inside the bracket
-            Question::PopOuts { .. } => Value::PopOuts {
-                pop_outs: Vec::new(),
-                jumps: Vec::new(),
-            },
             Question::Curve { max_force } => Value::Curve(Box::new(self.line(spring, *max_force))),
-            Question::SpringConstant => Value::SpringConstant(self.slope * spring.force_scale()),
+            Question::PopOuts { .. } | Question::SpringConstant => return None,
         };
-        Answer {
+        Some(Answer {
             value,
             estimated_error: self.bound,
             tolerance,
@@ -157,7 +172,7 @@ impl Bracket {
             reason: Reason::Bracketed { gap: self.bound },
             reached: true,
             elapsed: clock.elapsed(),
-        }
+        })
     }
 
     /// The tangent from rest to f = `max_force` as a two-point curve (its
