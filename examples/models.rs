@@ -135,7 +135,7 @@ fn scenes(args: &[String]) -> Result<(), String> {
             f64::INFINITY
         };
         println!(
-            "scene n={n} theta0={theta0} a_over_b={a_over_b} nu={nu} model={} estimated={:.3e} true={truth:.3e} seconds={:.3}",
+            "scene n={n} theta0={theta0} a_over_b={a_over_b} nu={nu} model={} estimated={:.3e} true={truth:.3e} seconds={:.3e}",
             answer.choice().name(),
             answer.estimated_error(),
             answer.elapsed().as_secs_f64()
