@@ -38,9 +38,7 @@ pub enum Value {
 #[non_exhaustive]
 pub enum Choice {
     /// A closed form of the linear response at rest
-    /// ([`Spring::spring_constant`](super::Spring::spring_constant)): the
-    /// spring constant, or for a small pull the rod's tangent at rest
-    /// ([`Reason::Bracketed`]).
+    /// ([`Spring::spring_constant`](super::Spring::spring_constant)).
     LinearResponse,
     /// The 3D rod ([`RodModel`](super::RodModel)) at this tolerance.
     Rod {
@@ -129,16 +127,6 @@ impl core::fmt::Display for SetAside {
 pub enum Reason {
     /// The linear response at rest is a closed form, exact up to rounding.
     ClosedForm,
-    /// A pull small enough that the rod's curve lies between its tangent
-    /// at rest and the exact helix (the bracket, derived in
-    /// `docs/ACCURACY.md`, "spring: what each model costs"), which are at
-    /// most `gap` apart in Δz up to the load: the tangent answers, within
-    /// `gap`, with no pop-out.
-    Bracketed {
-        /// The largest gap in Δz between the helix and the tangent up to
-        /// the load (the estimated error).
-        gap: f64,
-    },
     /// Neither cheap model can be certified at the tolerance: the rod
     /// answered, at half the tolerance asked (its estimate is reported
     /// doubled), the cheapest rod that meets it.
@@ -159,9 +147,7 @@ pub enum Reason {
 /// The error is the model's own estimate: for the rod, the largest
 /// distance (max norm in (Δz, F/((2πn)²B))) between what it returns (its
 /// points, folds and interpolant, and the values read off it) and the exact
-/// curve ([`crate::rod::PullRun::estimate`]); for a small pull answered by
-/// the rod's tangent, the gap between that tangent and the exact helix
-/// ([`Reason::Bracketed`]), which bounds it; for the spring constant, a
+/// curve ([`crate::rod::PullRun::estimate`]); for the spring constant, a
 /// relative error.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Answer {
@@ -234,9 +220,6 @@ impl Answer {
             Reason::ClosedForm => format!(
                 "linear response: closed form (Castigliano on the rest helix), estimated error {:.0e} (relative)",
                 self.estimated_error
-            ),
-            Reason::Bracketed { gap } => format!(
-                "linear response: up to this load the rod lies between its tangent at rest and the exact helix, at most {gap:.1e} apart; no pop-out"
             ),
             Reason::RodNeeded {
                 helix,

@@ -7,7 +7,6 @@
 //! | question | model | when |
 //! |---|---|---|
 //! | spring constant | linear response (closed form, [`Spring::spring_constant`]) | helical intrinsic strains |
-//! | a curve or values up to F/((2πn)²B) ≤ 0.2 | linear response, the rod's tangent at rest | 2 ≤ n ≤ 16, tolerance ≤ 0.1, and the gap between the tangent and the exact helix up to the load within it: the rod lies between them (`bracket.rs`), so the gap is the error |
 //! | anything else | exact helix | never certified: loaded on its axis, it leaves the rest state with another slope (k_rod/k_helix from 0.41 for a slinky to 0.65 for n = 6, θ0 = 89.9°, A/B = 20) |
 //! | anything else | flat elastica | never certified: it passes ≥ 0.4 cos θ0 from the rest state, ignores pitch, A, C and pop-outs, and no bound on its error is known without the rod |
 //! | anything else | rod at half the tolerance asked | always: twice its own estimate ([`crate::rod::PullRun::estimate`]) |
@@ -44,10 +43,6 @@ const ROD_ESTIMATE_SAFETY: f64 = 2.0;
 /// reported error still exceeds the tolerance, it is run once more at a
 /// tolerance this many times smaller.
 const RETRY_DIVISOR: f64 = 10.0;
-
-/// The bracket answers tolerances up to the rod's largest
-/// ([`crate::rod::Pull::tolerance`]): one domain for both.
-const MAX_BRACKET_TOLERANCE: f64 = 0.1;
 
 /// The rod's smallest tolerance ([`crate::rod::Pull::tolerance`]).
 const MIN_ROD_TOLERANCE: f64 = 1e-12;
@@ -108,13 +103,6 @@ impl Spring {
                 elapsed: clock.elapsed(),
             });
         };
-        if tolerance <= MAX_BRACKET_TOLERANCE
-            && let Some(bracket) = self.bracket(target)?
-            && bracket.bound <= tolerance
-            && let Some(answer) = bracket.answer(self, question, tolerance, clock)
-        {
-            return Ok(answer);
-        }
         let helix = self.helix_set_aside(target)?;
         let elastica = self.elastica_set_aside(target, tolerance)?;
 

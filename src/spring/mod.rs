@@ -30,7 +30,6 @@
 //! ```
 
 mod answer;
-mod bracket;
 mod choice;
 mod contact;
 mod elastica_model;

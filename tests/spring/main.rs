@@ -4,7 +4,6 @@
 mod common;
 
 mod bad_input;
-mod bracket;
 mod cascade;
 mod choice;
 mod contact;
@@ -13,3 +12,4 @@ mod models;
 mod scene;
 mod stability;
 mod sweep;
+mod tangent;
