@@ -45,6 +45,8 @@ use std::time::{Duration, Instant};
 
 #[path = "../tests/spring/measure.rs"]
 mod measure;
+#[path = "models/plot.rs"]
+mod plot;
 #[path = "models/trade.rs"]
 mod trade;
 
