@@ -12,3 +12,4 @@ mod models;
 mod scene;
 mod stability;
 mod sweep;
+mod tangent;

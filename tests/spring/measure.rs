@@ -1,6 +1,7 @@
 //! The true error of a curve against a converged reference, measured here
-//! and not by the crate: shared by `tests/spring/choice.rs` and
-//! `examples/models.rs` (which includes this file by path).
+//! and not by the crate, and the grid of scenes: shared by
+//! `tests/spring/choice.rs` and `examples/models.rs` (which includes this
+//! file by path).
 //!
 //! A curve is what a [`Response`] returns: its points joined by their
 //! Hermite interpolant (`common::hermite`, written out from the points,
@@ -151,3 +152,24 @@ pub fn both_ways(a: &Drawn<'_>, b: &Drawn<'_>) -> f64 {
 }
 
 pub use crate::common::hermite;
+
+/// The grid: n ∈ {2, 3, 4, 6} × θ0 ∈ {60, 70, 80, 86, 89, 89.9}°,
+/// two (A/B, ν) per pair from A/B ∈ {0.1, 0.5, 1, 3, 10, 20} (index
+/// i + ⌊i/12⌋ mod 6 of scene i) and ν ∈ {0, 0.1, 0.2, 0.3, 0.4} (3i mod 5),
+/// chosen by index, not tuned: 48 scenes (n, θ0 in degrees, A/B, ν).
+pub fn grid_scenes() -> Vec<(u32, f64, f64, f64)> {
+    let ratios = [0.1, 0.5, 1.0, 3.0, 10.0, 20.0];
+    let nus = [0.0, 0.1, 0.2, 0.3, 0.4];
+    let mut scenes = Vec::new();
+    for n in [2u32, 3, 4, 6] {
+        for theta0 in [60.0, 70.0, 80.0, 86.0, 89.0, 89.9] {
+            for _ in 0..2 {
+                let i = scenes.len();
+                // each n shifts the ratios by one, so every θ0 sees most
+                // of them across the four n
+                scenes.push((n, theta0, ratios[(i + i / 12) % 6], nus[(i * 3) % 5]));
+            }
+        }
+    }
+    scenes
+}
