@@ -183,6 +183,9 @@ mod derivatives;
 mod duplication;
 mod epsilon;
 mod fixed;
+mod half_argument;
+#[rustfmt::skip]
+mod h_series;
 mod incomplete;
 mod jacobi;
 mod landen;
