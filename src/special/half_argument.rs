@@ -42,7 +42,11 @@ const MAX_HALVINGS: usize = 64;
 /// coefficients (Horner, independent of each other).
 #[inline(always)]
 fn coefficients(m: f64) -> [f64; 12] {
-    H.map(|p| p.iter().rev().fold(0.0, |acc, &c| c + m * acc))
+    let mut h = [0.0; 12];
+    for (hk, p) in h.iter_mut().zip(H) {
+        *hk = p.iter().rev().fold(0.0, |acc, &c| c + m * acc);
+    }
+    h
 }
 
 /// Σ h_k y^{k−1} (12 terms) by Estrin's scheme.
