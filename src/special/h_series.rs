@@ -5,7 +5,7 @@
 //! terms at y = 0.04: <= 1.89e-18 of H for m in [0, 1].
 #![allow(clippy::unreadable_literal, clippy::excessive_precision)]
 
-pub(super) static H: [&[f64]; 12] = [
+pub(super) const H: [&[f64]; 12] = [
     &[0.16666666666666666],
     &[0.075, 0.025],
     &[0.044642857142857144, 0.017857142857142856, 0.008928571428571428],

@@ -13,6 +13,9 @@ Q_k = sum_j a_(k-j) b_j m^j,  a_n = (1/2)_n/n!,  b_n = (-1/2)_n/n!,
 and Q_k(1) = 0, so Q_k = (1 - m) R_k with R_k a polynomial of degree k-1
 (partial sums of Q_k's coefficients; all positive), and
     H = s^3 sum_{k>=1} h_k(m) y^(k-1),  h_k = R_k/(2k+1),  y = s^2.
+H is a `const` (not a `static`), so that a crate inlining `ellip_e_inc`
+sees the coefficients and unrolls the loops over them (as a `static`
+E(phi) took 55 ns in the bench instead of 42).
 The series is used for y <= DELTA = 0.04 with NH = 12 terms; the first
 neglected terms (the next 12, the rest being smaller by 0.04^12) are
 checked below 2^-58 (1/64 ulp) of H, whose share of E = s + m1 H is <= 1, for m = 0, 0.01, ..., 1.
@@ -68,7 +71,7 @@ def main():
         "//! (coefficient of m^0 first; exact rationals rounded once). Neglected\n"
         f"//! terms at y = {float(DELTA)}: <= {float(worst):.2e} of H for m in [0, 1].\n"
         "#![allow(clippy::unreadable_literal, clippy::excessive_precision)]\n\n"
-        f"pub(super) static H: [&[f64]; {NH}] = [\n" + "\n".join(rows) + "\n];\n"
+        f"pub(super) const H: [&[f64]; {NH}] = [\n" + "\n".join(rows) + "\n];\n"
     )
     with open("src/special/h_series.rs", "w") as f:
         f.write(text)
