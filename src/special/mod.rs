@@ -148,7 +148,8 @@
 //! # Performance
 //! ns per call on the project's shared 2-core machine (x86-64 baseline, no
 //! FMA), interleaved minimum over 1024 inputs, with `ellip` 1.2.3 in the
-//! same passes (medians of four runs at load average 6–8); "extreme" is
+//! same passes (medians of four runs at load average 6–8; E(φ) from one run
+//! at load 6–7 after its half-argument rewrite); "extreme" is
 //! m₁ = 10^−U(0,15), φ = π/2 − 10^−U(0,8), u ∈ [0, 100]:
 //!
 //! | function | uniform | ellip | extreme | ellip |
