@@ -21,6 +21,7 @@ neglected terms (the next 12, the rest being smaller by 0.04^12) are
 checked below 2^-58 (1/64 ulp) of H, whose share of E = s + m1 H is <= 1, for m = 0, 0.01, ..., 1.
 """
 from fractions import Fraction as Fr
+import math
 from math import comb
 
 from mpmath import mp, mpf
@@ -59,8 +60,45 @@ def check_truncation():
     return worst
 
 
+def reach_table():
+    """REACH[i], i = 0..63: the largest y (grid 1/2000, in [DELTA, 1/2]) at
+    which the 12-term series may start for m1 in [2^e, 2^(e+1)), e = -(i+1)
+    (i = 63 also for every smaller m1).  E = s + m1 H, so a relative error
+    tau of H moves E by tau m1 H/E <= tau B, with
+    B = min(1, 1.25 m1 ln(16/m1)) at the bucket's largest m1 (H <= H(pi/2)
+    = (E - 1)/m1 < ln(16/m1)/4, and s > 0.2 wherever the series is not
+    used at once); the truncation tau (terms 13..60 over terms 1..12, at
+    the bucket's largest m and at m = 1) must keep tau B <= 2^-57."""
+    h = [[float(c) for c in p] for p in coefficients(60)]
+
+    def hk(m):
+        return [sum(c * m**j for j, c in enumerate(p)) for p in h]
+
+    out = []
+    for i in range(64):
+        e = -(i + 1)
+        m1_hi = 2.0 ** (e + 1)
+        b = min(1.0, 1.25 * m1_hi * math.log(16 / m1_hi))
+        cs = [hk(1 - 2.0**e), hk(1.0)]
+        best = float(DELTA)
+        for n in range(80, 1001):
+            y = n / 2000
+            ok = True
+            for c in cs:
+                head = sum(c[k] * y**k for k in range(NH))
+                tail = sum(c[k] * y**k for k in range(NH, 60))
+                if tail / head * b > 2.0**-57:
+                    ok = False
+            if not ok:
+                break
+            best = y
+        out.append(best)
+    return out
+
+
 def main():
     worst = check_truncation()
+    reach = reach_table()
     rows = []
     for r in coefficients(NH):
         rows.append("    &[" + ", ".join(repr(float(x)) for x in r) + "],")
@@ -72,6 +110,12 @@ def main():
         f"//! terms at y = {float(DELTA)}: <= {float(worst):.2e} of H for m in [0, 1].\n"
         "#![allow(clippy::unreadable_literal, clippy::excessive_precision)]\n\n"
         f"pub(super) const H: [&[f64]; {NH}] = [\n" + "\n".join(rows) + "\n];\n"
+        "\n/// The largest sin\u00b2 at which the series may start, by the binary\n"
+        "/// exponent e of m1 (index -e - 1, clamped to 0..=63): the smaller m1,\n"
+        "/// the less H weighs in E = s + m1 H and the fewer terms it needs.\n"
+        "pub(super) const REACH: [f64; 64] = [\n"
+        + "\n".join("    " + ", ".join(repr(v) for v in reach[i:i + 8]) + "," for i in range(0, 64, 8))
+        + "\n];\n"
     )
     with open("src/special/h_series.rs", "w") as f:
         f.write(text)
