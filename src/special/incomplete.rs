@@ -234,7 +234,8 @@ pub fn ellip_f(phi: f64, modulus: Modulus) -> f64 {
 /// ```
 /// H by the half-argument transformation (after Fukushima 2011): the
 /// argument u = F(r, k) is halved through sn²(u/2) = (1 − cn)/(1 + dn)
-/// (DLMF 22.6.19) until sin² ≤ 0.04, H taken there from its Maclaurin
+/// (DLMF 22.6.19) until sin² ≤ 0.04 (up to ½ for small m₁, where H weighs
+/// little in E), H taken there from its Maclaurin
 /// series in sin², and doubled back by a formula of positive terms (from
 /// DLMF 22.16.27), so nothing cancels even as m → 1. Near r = π/2 the
 /// complementary amplitude folds E(r) to E − E(ψ) + m sin r sin ψ.

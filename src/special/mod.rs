@@ -50,11 +50,13 @@
 //!   H = ∫0^r sin²θ/(cos θ + Δ) dθ ≥ 0, by the half-argument
 //!   transformation (after Fukushima 2011): u = F(r) is halved through
 //!   sn²(u/2) = (1 − cn)/(1 + dn) (DLMF 22.6.19) until sin² ≤ 0.04, H
-//!   taken there from its 12-term series in sin² (coefficients exact,
+//!   taken there from its 12-term series in sin² (coefficients exact;
+//!   the threshold rises to ½ as m₁ shrinks, since H weighs ≤ 1.25 m₁
+//!   ln(16/m₁) in E;
 //!   `tests/data/gen_special_halfarg.py`) and doubled back by
 //!   H(2u) = 2H(u) + (a sum of positive terms, from DLMF 22.16.27), so no
 //!   step cancels. It replaced Carlson's R_F + R_D (1.38 → 1.14 ulp norm.,
-//!   58 → 42 ns).
+//!   58 → 41 ns uniform, 75 → 53 ns extreme).
 //! - **sn, cn, dn, am**: u = 2jK + r with 2K as a double-double and exact
 //!   products (|r| ≤ K); |r| > K/2 is folded by the quarter-period shift
 //!   (DLMF 22.4.3) to K − |r| ∈ [0, K/2] (K − |r| formed from K's
@@ -148,8 +150,8 @@
 //! # Performance
 //! ns per call on the project's shared 2-core machine (x86-64 baseline, no
 //! FMA), interleaved minimum over 1024 inputs, with `ellip` 1.2.3 in the
-//! same passes (medians of four runs at load average 6–8; E(φ) from one run
-//! at load 6–7 after its half-argument rewrite); "extreme" is
+//! same passes (medians of four runs at load average 6–8; E(φ): median of
+//! three runs at load 9 after its half-argument rewrite); "extreme" is
 //! m₁ = 10^−U(0,15), φ = π/2 − 10^−U(0,8), u ∈ [0, 100]:
 //!
 //! | function | uniform | ellip | extreme | ellip |
@@ -157,7 +159,7 @@
 //! | K | 6.9 | 12.0 | 12.0 | 21.0 |
 //! | E | 6.8 | 13.4 | 9.4 | 35.4 |
 //! | F(φ) | 40.8 | 69.1 | 57.3 | 96.1 |
-//! | E(φ) | 42.1 | 104.1 | 62.3 | 131.1 |
+//! | E(φ) | 40.6 | 105.1 | 53.2 | 131.9 |
 //! | jacobi | 63.7 | – | 78.3 | – |
 //! | [`FixedModulus::jacobi`] (128 u per modulus) | 20.3 | – | 24.9 | – |
 //!
