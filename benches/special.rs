@@ -15,6 +15,8 @@
 //! then ellip, then the next function, 300 rounds) and the minimum per
 //! batch is printed: on a shared machine the minimum of interleaved rounds
 //! is a far steadier ratio than two criterion means taken minutes apart.
+//! Then each function is replayed alone (300 consecutive passes, minimum),
+//! which is what criterion's loop measures, without its load-sensitive mean.
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -184,134 +186,143 @@ fn pass(f: &mut dyn FnMut() -> f64) -> f64 {
     t.elapsed().as_secs_f64() * 1e9 / N as f64
 }
 
+/// A modulus from m, built in the timed loop.
+fn md(m: f64) -> Modulus {
+    Modulus::from_m(black_box(m)).unwrap()
+}
+
+/// The timed passes over one input set: hockle's functions next to ellip's.
+fn passes(xs: &[(f64, f64, f64)]) -> Vec<(&'static str, Pass<'_>)> {
+    vec![
+        (
+            "K",
+            Box::new(move || xs.iter().map(|&(m, _, _)| ellip_k(md(m))).sum()),
+        ),
+        (
+            "K ellip",
+            Box::new(move || {
+                xs.iter()
+                    .map(|&(m, _, _)| ellip::ellipk(black_box(m)).unwrap())
+                    .sum()
+            }),
+        ),
+        (
+            "E",
+            Box::new(move || xs.iter().map(|&(m, _, _)| ellip_e(md(m))).sum()),
+        ),
+        (
+            "E ellip",
+            Box::new(move || {
+                xs.iter()
+                    .map(|&(m, _, _)| ellip::ellipe(black_box(m)).unwrap())
+                    .sum()
+            }),
+        ),
+        (
+            "F",
+            Box::new(move || {
+                xs.iter()
+                    .map(|&(m, p, _)| ellip_f(black_box(p), md(m)))
+                    .sum()
+            }),
+        ),
+        (
+            "F ellip",
+            Box::new(move || {
+                xs.iter()
+                    .map(|&(m, p, _)| ellip::ellipf(black_box(p), black_box(m)).unwrap())
+                    .sum()
+            }),
+        ),
+        (
+            "E(phi)",
+            Box::new(move || {
+                xs.iter()
+                    .map(|&(m, p, _)| ellip_e_inc(black_box(p), md(m)))
+                    .sum()
+            }),
+        ),
+        (
+            "E(phi) ellip",
+            Box::new(move || {
+                xs.iter()
+                    .map(|&(m, p, _)| ellip::ellipeinc(black_box(p), black_box(m)).unwrap())
+                    .sum()
+            }),
+        ),
+        (
+            "jacobi",
+            Box::new(move || {
+                xs.iter()
+                    .map(|&(m, _, u)| {
+                        let j = jacobi(black_box(u), md(m));
+                        j.sn + j.cn + j.dn
+                    })
+                    .sum()
+            }),
+        ),
+        (
+            "epsilon",
+            Box::new(move || {
+                xs.iter()
+                    .map(|&(m, _, u)| jacobi_epsilon(black_box(u), md(m)))
+                    .sum()
+            }),
+        ),
+        (
+            "jacobi@8 m single",
+            Box::new(move || {
+                xs.chunks(N / GROUPS)
+                    .map(|c| {
+                        let mdl = md(c[0].0);
+                        c.iter()
+                            .map(|&(_, _, u)| {
+                                let j = jacobi(black_box(u), mdl);
+                                j.sn + j.cn + j.dn
+                            })
+                            .sum::<f64>()
+                    })
+                    .sum()
+            }),
+        ),
+        (
+            "jacobi@8 m FixedModulus",
+            Box::new(move || {
+                xs.chunks(N / GROUPS)
+                    .map(|c| {
+                        let f = FixedModulus::new(md(c[0].0));
+                        c.iter()
+                            .map(|&(_, _, u)| {
+                                let j = f.jacobi(black_box(u));
+                                j.sn + j.cn + j.dn
+                            })
+                            .sum::<f64>()
+                    })
+                    .sum()
+            }),
+        ),
+        (
+            "epsilon@8 m FixedModulus",
+            Box::new(move || {
+                xs.chunks(N / GROUPS)
+                    .map(|c| {
+                        let f = FixedModulus::new(md(c[0].0));
+                        c.iter()
+                            .map(|&(_, _, u)| f.epsilon(black_box(u)))
+                            .sum::<f64>()
+                    })
+                    .sum()
+            }),
+        ),
+    ]
+}
+
 /// Interleaved minimum-of-300 timings, hockle next to ellip.
 fn interleaved() {
     println!("interleaved minimum of 300 passes over {N} inputs, ns per call (hockle / ellip):");
     for (set, extreme) in [("uniform", false), ("extreme", true)] {
         let xs = inputs(extreme);
-        let md = |m: f64| Modulus::from_m(black_box(m)).unwrap();
-        let mut fs: Vec<(&str, Pass<'_>)> = vec![
-            (
-                "K",
-                Box::new(|| xs.iter().map(|&(m, _, _)| ellip_k(md(m))).sum()),
-            ),
-            (
-                "K ellip",
-                Box::new(|| {
-                    xs.iter()
-                        .map(|&(m, _, _)| ellip::ellipk(black_box(m)).unwrap())
-                        .sum()
-                }),
-            ),
-            (
-                "E",
-                Box::new(|| xs.iter().map(|&(m, _, _)| ellip_e(md(m))).sum()),
-            ),
-            (
-                "E ellip",
-                Box::new(|| {
-                    xs.iter()
-                        .map(|&(m, _, _)| ellip::ellipe(black_box(m)).unwrap())
-                        .sum()
-                }),
-            ),
-            (
-                "F",
-                Box::new(|| {
-                    xs.iter()
-                        .map(|&(m, p, _)| ellip_f(black_box(p), md(m)))
-                        .sum()
-                }),
-            ),
-            (
-                "F ellip",
-                Box::new(|| {
-                    xs.iter()
-                        .map(|&(m, p, _)| ellip::ellipf(black_box(p), black_box(m)).unwrap())
-                        .sum()
-                }),
-            ),
-            (
-                "E(phi)",
-                Box::new(|| {
-                    xs.iter()
-                        .map(|&(m, p, _)| ellip_e_inc(black_box(p), md(m)))
-                        .sum()
-                }),
-            ),
-            (
-                "E(phi) ellip",
-                Box::new(|| {
-                    xs.iter()
-                        .map(|&(m, p, _)| ellip::ellipeinc(black_box(p), black_box(m)).unwrap())
-                        .sum()
-                }),
-            ),
-            (
-                "jacobi",
-                Box::new(|| {
-                    xs.iter()
-                        .map(|&(m, _, u)| {
-                            let j = jacobi(black_box(u), md(m));
-                            j.sn + j.cn + j.dn
-                        })
-                        .sum()
-                }),
-            ),
-            (
-                "epsilon",
-                Box::new(|| {
-                    xs.iter()
-                        .map(|&(m, _, u)| jacobi_epsilon(black_box(u), md(m)))
-                        .sum()
-                }),
-            ),
-            (
-                "jacobi@8 m single",
-                Box::new(|| {
-                    xs.chunks(N / GROUPS)
-                        .map(|c| {
-                            let mdl = md(c[0].0);
-                            c.iter()
-                                .map(|&(_, _, u)| {
-                                    let j = jacobi(black_box(u), mdl);
-                                    j.sn + j.cn + j.dn
-                                })
-                                .sum::<f64>()
-                        })
-                        .sum()
-                }),
-            ),
-            (
-                "jacobi@8 m FixedModulus",
-                Box::new(|| {
-                    xs.chunks(N / GROUPS)
-                        .map(|c| {
-                            let f = FixedModulus::new(md(c[0].0));
-                            c.iter()
-                                .map(|&(_, _, u)| {
-                                    let j = f.jacobi(black_box(u));
-                                    j.sn + j.cn + j.dn
-                                })
-                                .sum::<f64>()
-                        })
-                        .sum()
-                }),
-            ),
-            (
-                "epsilon@8 m FixedModulus",
-                Box::new(|| {
-                    xs.chunks(N / GROUPS)
-                        .map(|c| {
-                            let f = FixedModulus::new(md(c[0].0));
-                            c.iter()
-                                .map(|&(_, _, u)| f.epsilon(black_box(u)))
-                                .sum::<f64>()
-                        })
-                        .sum()
-                }),
-            ),
-        ];
+        let mut fs = passes(&xs);
         let mut best = vec![f64::INFINITY; fs.len()];
         for _ in 0..300 {
             for (b, (_, f)) in best.iter_mut().zip(fs.iter_mut()) {
@@ -322,6 +333,26 @@ fn interleaved() {
             .iter()
             .zip(&best)
             .map(|((n, _), b)| format!("{n} {b:.1}"))
+            .collect();
+        println!("  {set}: {}", line.join(", "));
+    }
+}
+
+/// Criterion's replay without its means: each function alone, 300
+/// consecutive passes over the same 1024 inputs (so the branch predictor
+/// learns them, as in criterion's loop), minimum per pass. Under machine
+/// load the minimum is steadier than criterion's mean.
+fn replayed() {
+    println!("replayed minimum (300 consecutive passes of one function), ns per call:");
+    for (set, extreme) in [("uniform", false), ("extreme", true)] {
+        let xs = inputs(extreme);
+        let line: Vec<String> = passes(&xs)
+            .into_iter()
+            .filter(|(n, _)| !n.contains('@') && *n != "epsilon")
+            .map(|(n, mut f)| {
+                let best = (0..300).fold(f64::INFINITY, |b, _| b.min(pass(f.as_mut())));
+                format!("{n} {best:.1}")
+            })
             .collect();
         println!("  {set}: {}", line.join(", "));
     }
@@ -416,6 +447,7 @@ criterion_group!(benches, bench);
 
 fn main() {
     interleaved();
+    replayed();
     newton_in_m();
     centreline();
     benches();

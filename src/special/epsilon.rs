@@ -1,7 +1,7 @@
 //! Jacobi's epsilon function ε(u, k) = E(am u, k) and the zeta function Z(u, k).
 
 use super::Modulus;
-use super::carlson::rd;
+use super::carlson::rd_roots;
 use super::complete::{ellip_e, ellip_e_dd, two_prod};
 use super::jacobi::sncndn_quarter;
 use super::period::Period;
@@ -22,7 +22,7 @@ fn cd_small(sn: f64, dn: f64, mc: f64) -> f64 {
 fn epsilon_small(v: f64, sn: f64, cn: f64, dn: f64, m: f64, mc: f64) -> f64 {
     let mut e = mc * v + m * sn * cd_small(sn, dn, mc);
     if mc != 0.0 {
-        e += m * mc / 3.0 * sn * sn * sn * rd(cn * cn, 1.0, dn * dn);
+        e += m * mc / 3.0 * sn * sn * sn * rd_roots(cn * cn, 1.0, dn * dn, cn, 1.0, dn);
     }
     e
 }

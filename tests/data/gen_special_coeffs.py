@@ -169,11 +169,6 @@ from fractions import Fraction
 from math import comb, factorial
 
 RF_ORDER, RD_ORDER = 15, 10
-# In the joint R_F/R_D loop (E(φ)) the loop runs until the R_D spread is
-# below TOL_RD = 0.035 about the weighted mean A_D = (x + y + 3z)/5; then the
-# spread about A_F = (x + y + z)/3 is at most (10/9) TOL_RD / (1 - 4 TOL_RD/9)
-# = 0.0395, where the order-10 R_F series truncates at <= 1.7e-18.
-RF_JOINT_ORDER = 10
 
 
 def binom_half(j):
@@ -264,12 +259,11 @@ def carlson_rust():
     out = [
         "//! GENERATED FILE, do not edit: `python3 tests/data/gen_special_coeffs.py`.",
         "//! Exempt from rustfmt (`#[rustfmt::skip]` in `mod.rs`).",
-        f"//! Taylor series of R_F (orders {RF_ORDER} and {RF_JOINT_ORDER}) and R_D (order {RD_ORDER}) about the mean.",
+        f"//! Taylor series of R_F (order {RF_ORDER}) and R_D (order {RD_ORDER}) about the mean.",
         "#![allow(clippy::unreadable_literal, clippy::excessive_precision)]",
     ]
     for name, order, doc in [
         ("rf_series", RF_ORDER, ""),
-        ("rf_series_joint", RF_JOINT_ORDER, f"\n/// Order {RF_JOINT_ORDER}, for the joint loop's spread ≤ 0.0395."),
     ]:
         rf = rf_terms(order)
         out += [
