@@ -265,8 +265,13 @@ fn last_extension(run: &PullRun) -> f64 {
         .map_or(f64::NAN, |p| p.extension)
 }
 
-fn termination(t: &Termination) -> String {
-    match t {
+/// Why a run ended, and for a run that reached its target whether its
+/// estimate met its tolerance ([`PullRun::meets_tolerance`]).
+fn termination(run: &PullRun) -> String {
+    match run.termination() {
+        Termination::ParameterValue(_) if !run.meets_tolerance() => {
+            "reached, tolerance NOT met".into()
+        }
         Termination::ParameterValue(_) => "reached".into(),
         Termination::MaxSteps(n) => format!("step limit ({n})"),
         Termination::Stopped => format!("stopped after {} s", REFERENCE_BUDGET.as_secs()),
@@ -330,7 +335,7 @@ fn rod() {
         };
         println!(
             "{head} {} (Δz = {:.8}) | {} | {} | {pop_outs} | {:.1e} | {} ({}) | {:.1} s | {} (Δz = {:.8}) | {} | {:.1} s | {folds} | {end} |",
-            termination(run_default.termination()),
+            termination(&run_default),
             last_extension(&run_default),
             run_default.curve().len(),
             run_default.folds().len(),
@@ -338,7 +343,7 @@ fn rod() {
             run_default.estimate().intervals,
             run_default.estimate().max_intervals,
             run_default.elapsed().as_secs_f64(),
-            termination(run_ref.termination()),
+            termination(&run_ref),
             last_extension(&run_ref),
             run_ref.folds().len(),
             run_ref.elapsed().as_secs_f64(),
