@@ -155,13 +155,18 @@ impl Model for ElasticaModel {
         let traced = curve.force_scaled(curve.len() - 1);
         let curve = in_units_of_b(curve, spring);
         let converted = curve.force_scaled(curve.len() - 1);
-        if let (Some(a), Some(b)) = (traced, converted)
-            && (b - a).abs() > Self::FORCE_ACCURACY * a.abs()
-        {
+        let off = match (traced, converted) {
+            (Some(a), Some(b)) => (b - a).abs() / a.abs(),
+            _ => f64::NAN,
+        };
+        if off.is_nan() || off > Self::FORCE_ACCURACY {
             // the physical forces (2πn)²B·F are subnormal: fewer than 53 bits
             return Err(crate::Error::OutsideModel {
                 model: "elastica",
-                assumption: "forces in the spring's units keep their value to 1e-13 in double                              precision; at this stiffness the physical force (2πn)²B·F is below                              the smallest normal double (2.2e-308) and has fewer than 53 bits:                              use a larger bending stiffness B",
+                assumption: "forces in the spring's units keep their value to 1e-13 in double \
+                             precision; at this stiffness the physical force (2πn)²B·F is below \
+                             the smallest normal double (2.2e-308) and has fewer than 53 bits: \
+                             use a larger bending stiffness B",
             });
         }
         let stop = match target {
