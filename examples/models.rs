@@ -30,6 +30,8 @@
 
 use std::time::{Duration, Instant};
 
+#[path = "../tests/common/mod.rs"]
+mod common;
 #[path = "../tests/spring/measure.rs"]
 mod measure;
 

@@ -159,22 +159,12 @@ fn fold_error(run: &PullRun, reference: &PullRun) -> f64 {
     worst
 }
 
-/// The cubic Hermite interpolant of `curve` on segment `i` at τ ∈ [0, 1] in
-/// (Δz, F/((2πn)²B)), written out from the points and slopes.
+/// The curve's own interpolant ([`ForceExtension::at`]) on segment `i` at
+/// τ ∈ [0, 1] in (Δz, F/((2πn)²B)).
 fn hermite(curve: &ForceExtension, i: usize, t: f64) -> [f64; 2] {
-    let (a, b) = (curve.points()[i], curve.points()[i + 1]);
-    let (sa, sb) = match (curve.slope(i), curve.slope(i + 1)) {
-        (Some(sa), Some(sb)) => (sa, sb),
-        _ => return [f64::NAN; 2],
-    };
-    let h = b.parameter - a.parameter;
-    let h00 = 2.0 * t.powi(3) - 3.0 * t * t + 1.0;
-    let h10 = t.powi(3) - 2.0 * t * t + t;
-    let h01 = -2.0 * t.powi(3) + 3.0 * t * t;
-    let h11 = t.powi(3) - t * t;
-    let x = h00 * a.extension + h10 * h * sa.extension + h01 * b.extension + h11 * h * sb.extension;
-    let f = h00 * a.force + h10 * h * sa.force + h01 * b.force + h11 * h * sb.force;
-    [x, f / curve.force_scale()]
+    curve.at(i, t).map_or([f64::NAN; 2], |p| {
+        [p.extension, p.force / curve.force_scale()]
+    })
 }
 
 /// Max-norm distance from `p` to the interpolant of `reference`: the three

@@ -45,8 +45,8 @@ pub struct ErrorEstimate {
     /// The largest error of a located point (fold, branch point, stop,
     /// event) measured against the halved mesh.
     pub located: f64,
-    /// The largest interpolation error estimate of a step's cubic Hermite
-    /// interpolant.
+    /// The largest interpolation error estimate of a step's quintic
+    /// Hermite interpolant.
     pub interpolation: f64,
     /// Points checked against the halved mesh.
     pub checks: u32,
@@ -197,7 +197,11 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
                 (&mut xcol, &mut tcol),
             );
             let mut fine = guess.clone();
-            match newton(&mut h.sys, &mut fine, opts, false) {
+            // the last check's factorisation (a few steps back, same mesh)
+            // starts a chord corrector; Newton refreshes it when it
+            // contracts too slowly
+            let reuse = h.sys.is_factored() && h.sys.factor_border().is_ok();
+            match newton(&mut h.sys, &mut fine, opts, reuse) {
                 Ok(_) => {}
                 // (robust10c) Newton stuck at its rounding floor above the
                 // check's tolerance, within the corrector's (`STUCK_FLOOR`):
@@ -208,6 +212,9 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
                     | Error::NewtonNotConverged { correction, .. },
                 ) if correction <= floor => {}
                 Err(e) => return Err(e),
+            }
+            if !fold {
+                return Ok((fine, f64::NAN));
             }
             h.sys.factor(&fine)?;
             let tangent = border_rhs_solution(&mut h.sys)?;
@@ -315,6 +322,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         self.det0 = det;
         self.factored_at_x0 = true;
         self.halved = None;
+        self.jet0 = None;
         self.estimate.remeshes += 1;
         self.estimate.intervals = intervals;
         self.estimate.max_intervals = self.estimate.max_intervals.max(intervals);

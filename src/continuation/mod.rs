@@ -18,8 +18,9 @@
 //! `steps` (the two ways to drive a run), `observer`, `termination`,
 //! `point`, `norm` (the integral inner product), `corrector` (predictor,
 //! chord Newton, tangent), `difference` (F_x·t by central differences),
-//! `step_control`, `diagram` (the plane of a tolerance, the Hermite
-//! interpolant's error), `mesh_error` (the check against the halved mesh,
+//! `step_control`, `diagram` (the plane of a tolerance), `curvature` (x''
+//! of the branch and a point's jet in that plane), `hermite` (the quintic
+//! interpolant of a step and its error), `mesh_error` (the check against the halved mesh,
 //! the remesh), `tolerance` (the checks of a step with a tolerance),
 //! `locate` (special points),
 //! `switch` (branch switching), `fold_extended` (the extended problem of a
@@ -61,8 +62,9 @@
 //! 0.6 of the maximum angle (the angle grows with Δs). A
 //! failed corrector, or a tangent turning by more than the maximum angle,
 //! halves Δs and retries. With a [`tolerance`](Continuation::tolerance)
-//! the step also keeps the cubic Hermite interpolant of the branch in the
-//! diagram's plane near a fifth of it and never above half, the turn of that interpolant's
+//! the step also keeps the error of the quintic Hermite interpolant of the
+//! branch in the diagram's plane (through the points, slopes and
+//! curvatures) near a fifth of it and never above half, the turn of that interpolant's
 //! slope within the maximum angle, and the corrected point within 0.2 Δs
 //! of the predictor; and the mesh follows the solution (see there). Folds are sign changes of dλ/ds,
 //! branch points sign changes of det [F_x; τᵀ]; both are located by the
@@ -78,10 +80,12 @@
 //! *Lectures on Numerical Methods in Bifurcation Problems* (1987).
 
 mod corrector;
+mod curvature;
 mod diagram;
 mod difference;
 mod fold_curve;
 mod fold_extended;
+mod hermite;
 mod locate;
 mod mesh_error;
 mod norm;

@@ -58,6 +58,7 @@ pub struct Point {
     pub(super) tangent: Option<State>,
     pub(super) diagram: [f64; 2],
     pub(super) diagram_slope: [f64; 2],
+    pub(super) diagram_curvature: [f64; 2],
 }
 
 impl Point {
@@ -115,11 +116,23 @@ impl Point {
     }
 
     /// Its derivative along the branch, d/ds of [`Self::diagram`] (s the
-    /// arclength): with the points, the data of the branch's cubic Hermite
+    /// arclength): with the points, the data of the branch's Hermite
     /// interpolant.
     #[must_use]
     pub fn diagram_slope(&self) -> [f64; 2] {
         self.diagram_slope
+    }
+
+    /// Its second derivative along the branch, d²/ds² of
+    /// [`Self::diagram`], at every point of a run with a
+    /// [`tolerance`](super::Continuation::tolerance), whose interpolant
+    /// between points is the quintic Hermite polynomial of the points,
+    /// slopes and curvatures. `None` in runs without a tolerance (and
+    /// where x'' could not be had).
+    #[must_use]
+    pub fn diagram_curvature(&self) -> Option<[f64; 2]> {
+        let [a, b] = self.diagram_curvature;
+        (a.is_finite() && b.is_finite()).then_some(self.diagram_curvature)
     }
 
     /// What the point is.

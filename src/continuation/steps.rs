@@ -3,9 +3,10 @@
 use std::collections::VecDeque;
 use std::fmt;
 
+use super::hermite::{self, Jet};
 use super::mesh_error::{ErrorEstimate, HalvedMesh};
 use super::norm::IntegralNorm;
-use super::tolerance::{INTERPOLATION_REJECT, StepCheck, hermite_factor};
+use super::tolerance::{INTERPOLATION_REJECT, StepCheck, interpolation_factor};
 use super::{BranchSide, Continuation, Point, PointKind, Termination};
 use crate::bvp::system::{State, System};
 use crate::bvp::{NewtonOptions, Problem, Solution, finish};
@@ -48,9 +49,12 @@ pub struct Steps<'a, P: Problem + ?Sized> {
     pub(super) halved: Option<HalvedMesh<'a, P>>,
     /// With a tolerance: the mesh density integral at the last check.
     pub(super) checked_density: f64,
-    /// With a tolerance: P''' of the last step's Hermite interpolant and
-    /// the step's length.
-    pub(super) last_third: Option<([f64; 2], f64)>,
+    /// With a tolerance: P⁽⁵⁾ of the last step's interpolant and the
+    /// step's length.
+    pub(super) last_fifth: Option<([f64; 2], f64)>,
+    /// With a tolerance: the jet of x₀ in the diagram's plane, once
+    /// computed.
+    pub(super) jet0: Option<Jet>,
     /// Remeshes spent on the current step.
     pub(super) remeshes_this_step: u32,
     /// The point and tangent before x₀ and the step between them (the
@@ -188,7 +192,8 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             },
             halved: None,
             checked_density: f64::NAN,
-            last_third: None,
+            last_fifth: None,
+            jet0: None,
             remeshes_this_step: 0,
             previous: None,
             min_intervals: mesh_intervals,
@@ -225,7 +230,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             let v = steps.event_at(i, &sol)?;
             steps.events0.push(v);
         }
-        let first = steps.point(
+        let mut first = steps.point(
             sol,
             &steps.x0.clone(),
             &steps.t0.clone(),
@@ -233,6 +238,9 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             PointKind::Start,
             0,
         );
+        if cont.tolerance.is_some() {
+            first.diagram_curvature = steps.start_jet().curvature;
+        }
         steps.pending.push_back(first);
         Ok(steps)
     }
@@ -303,6 +311,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         Point {
             diagram,
             diagram_slope,
+            diagram_curvature: [f64::NAN; 2],
             solution,
             parameter: x.p[q],
             arclength: self.arclength,
@@ -354,22 +363,22 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             return;
         };
         let ds = self.ds;
-        let mut hermite = None;
+        let mut fit = None;
         if let Some(tol) = self.cont.tolerance {
-            let Some(h) = self.check_interpolation(&c, ds, tol) else {
+            let Some(f) = self.check_interpolation(&c, ds, tol) else {
                 return;
             };
-            hermite = Some(h);
+            fit = Some(f);
         }
         let in_step = self.special_points_in_step(&c, ds);
         let mut coarsen = None;
-        if let (Some(tol), Some(h)) = (self.cont.tolerance, hermite.as_mut()) {
+        if let (Some(tol), Some(f)) = (self.cont.tolerance, fit.as_mut()) {
             let inside: Vec<(State, State, f64)> = in_step
                 .found
                 .iter()
                 .map(|(cs, s, ..)| (cs.x.clone(), cs.tangent.clone(), *s))
                 .collect();
-            let at_located = self.located_interpolation_error(&c, ds, &inside);
+            let at_located = self.located_interpolation_error(f, ds, &inside);
             if at_located > INTERPOLATION_REJECT * tol && self.ds > self.cont.ds_min {
                 self.ds = (0.5 * ds).max(self.cont.ds_min);
                 self.factored_at_x0 = false;
@@ -377,7 +386,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
                 self.rejections.push(self.ds);
                 return;
             }
-            h.1 = h.1.max(at_located);
+            f.error = f.error.max(at_located);
         }
         if let Some(tol) = self.cont.tolerance {
             let located: Vec<(State, State, bool)> = in_step
@@ -400,8 +409,23 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         // Newton refreshes it when the contraction degrades.
         self.factored_at_x0 = true;
         let base = self.arclength;
+        // (with a tolerance, the step's arclength rather than its Δs)
+        let length = fit.as_ref().map_or(ds, |f| f.length);
         for (cs, s, kind, stop) in in_step.found {
-            self.arclength = base + s;
+            // with a tolerance, the located point's jet (a stop ends the
+            // curve: the last segment is interpolated to it) and its
+            // arclength from x₀ like the step's
+            let mut jet = None;
+            self.arclength = if fit.is_some() {
+                let start = self.start_jet();
+                let j = self.jet(&cs.x, &cs.tangent);
+                let mut chord = cs.x.clone();
+                chord.axpy(-1.0, &self.x0.clone(), &self.sys.free.clone());
+                jet = Some(j);
+                base + hermite::length(self.norm(&chord), &start, &j)
+            } else {
+                base + s
+            };
             let sol = match self.solution(&cs.x, Default::default()) {
                 Ok(s) => s,
                 Err(e) => {
@@ -409,7 +433,10 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
                     return;
                 }
             };
-            let p = self.point(sol, &cs.x, &cs.tangent, cs.det, kind, cs.iterations);
+            let mut p = self.point(sol, &cs.x, &cs.tangent, cs.det, kind, cs.iterations);
+            if let Some(j) = jet {
+                p.diagram_curvature = j.curvature;
+            }
             self.pending.push_back(p);
             if stop {
                 self.termination = Some(match kind {
@@ -423,7 +450,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             self.fail(e);
             return;
         }
-        self.arclength = base + ds;
+        self.arclength = base + length;
         let sol = match in_step
             .solution
             .map_or_else(|| self.solution(&c.x, Default::default()), Ok)
@@ -434,7 +461,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
                 return;
             }
         };
-        let p = self.point(
+        let mut p = self.point(
             sol,
             &c.x,
             &c.tangent,
@@ -442,6 +469,9 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             PointKind::Regular,
             c.iterations,
         );
+        if let Some(f) = &fit {
+            p.diagram_curvature = f.end.curvature;
+        }
         self.pending.push_back(p);
         // Accept: the new point becomes x₀; its factorisation is current
         // unless location overwrote it.
@@ -458,11 +488,13 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         self.sys.collocation_values(&self.x0, &mut y_ref);
         self.sys.y_ref = y_ref;
         let mut factor = f64::INFINITY;
-        if let Some((third, error)) = hermite {
-            self.last_third = Some((third, ds));
-            self.estimate.interpolation = self.estimate.interpolation.max(error);
+        self.jet0 = None;
+        if let Some(f) = fit {
+            self.last_fifth = Some((f.fifth, f.length));
+            self.jet0 = Some(f.end);
+            self.estimate.interpolation = self.estimate.interpolation.max(f.error);
             if let Some(tol) = self.cont.tolerance {
-                factor = hermite_factor(error, tol);
+                factor = interpolation_factor(f.error, tol);
             }
         }
         self.adapt_step(its, factor);
@@ -471,7 +503,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         {
             self.fold_behind |= flipped && self.cont.folds;
             // (a failed coarsening keeps the finer mesh)
-            self.last_third = None;
+            self.last_fifth = None;
         }
     }
 }

@@ -6,7 +6,7 @@
 //! folds passed over in one step).
 
 use super::Steps;
-use super::diagram::{across, hermite_at, hermite_error, hermite_third, turns_back_twice};
+use super::hermite::{self, Jet, across, turns_back_twice};
 use crate::bvp::Problem;
 use crate::bvp::system::State;
 use crate::error::Result;
@@ -30,16 +30,16 @@ const CHECK_EVERY: usize = 4;
 /// Relative change of the mesh density integral that triggers a check.
 const DENSITY_CHANGE: f64 = 0.1;
 
-/// Whether a neighbouring step of length `h` estimates P'''' for a step of
-/// length `ds` (a much shorter one carries P''' swamped by the rounding of
-/// its points, ∝ 1/h³).
+/// Whether a neighbouring step of length `h` estimates P⁽⁶⁾ for a step of
+/// length `ds` (a much shorter one carries P⁽⁵⁾ swamped by the rounding of
+/// its points, ∝ 1/h⁵).
 fn comparable(h: f64, ds: f64) -> bool {
     h >= 0.25 * ds && h <= 4.0 * ds
 }
 
 /// The midpoint's interpolation error times this bounds the step's (the
-/// remainder's shape τ²(1 − τ)² peaks there; the rest covers the change of
-/// P'''' along the step).
+/// remainder's shape τ³(1 − τ)³ peaks there; the rest covers the change of
+/// P⁽⁶⁾ along the step).
 const MIDPOINT_SAFETY: f64 = 1.5;
 
 /// The angle between two slopes in the diagram's plane (0 when either
@@ -63,14 +63,20 @@ const INTERPOLATION_SHARE: f64 = 0.25;
 /// curve stays within the tolerance).
 pub(super) const INTERPOLATION_REJECT: f64 = 0.5;
 
-/// The step factor that brings the Hermite interpolation error `error` to
-/// 0.8 of its share of `tol` (error ∝ h⁴).
-pub(super) fn hermite_factor(error: f64, tol: f64) -> f64 {
-    if error > 0.0 {
-        (0.8 * INTERPOLATION_SHARE * tol / error).powf(0.25)
-    } else {
-        f64::INFINITY
-    }
+/// The step factor that brings the interpolation error `error` to 0.8 of
+/// its share of `tol`.
+pub(super) fn interpolation_factor(error: f64, tol: f64) -> f64 {
+    hermite::step_factor(error, 0.8 * INTERPOLATION_SHARE * tol)
+}
+
+/// The interpolant of an accepted step: its P⁽⁵⁾, its error estimate and
+/// the jet of its end point.
+pub(super) struct StepFit {
+    /// The step's arclength ([`hermite::length`]).
+    pub(super) length: f64,
+    pub(super) fifth: [f64; 2],
+    pub(super) error: f64,
+    pub(super) end: Jet,
 }
 
 /// What the mesh checks of a step decided.
@@ -111,42 +117,60 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         Ok(())
     }
 
-    /// The interpolation check of a step: its P''' and error estimate, or
-    /// `None` when the step was rejected (Δs reduced) for an error above
-    /// half the tolerance.
+    /// The jet of x₀ (computed once per point).
+    pub(super) fn start_jet(&mut self) -> Jet {
+        if let Some(j) = self.jet0 {
+            return j;
+        }
+        let (x, t) = (self.x0.clone(), self.t0.clone());
+        let j = self.jet(&x, &t);
+        self.jet0 = Some(j);
+        j
+    }
+
+    /// The interpolation check of a step: its quintic's P⁽⁵⁾, error
+    /// estimate and end jet, or `None` when the step was rejected (Δs
+    /// reduced) for an error above half the tolerance or a guard.
     pub(super) fn check_interpolation(
         &mut self,
         c: &super::corrector::Corrected,
         ds: f64,
         tol: f64,
-    ) -> Option<([f64; 2], f64)> {
+    ) -> Option<StepFit> {
         // the corrector's distance from the predictor, relative to the step
         let free = self.sys.free.clone();
         let mut d = c.x.clone();
         d.axpy(-1.0, &self.x0.clone(), &free);
         d.axpy(-ds, &self.t0.clone(), &free);
         let drift = self.norm(&d) / ds;
-        let (p0, s0) = self.diagram_of(&self.x0, &self.t0);
-        let (p1, s1) = self.diagram_of(&c.x, &c.tangent);
-        let third = hermite_third(p0, s0, p1, s1, ds);
-        let error = match self.last_third {
-            Some((prev, h)) if comparable(h, ds) => {
-                // (the max-norm of ΔP''': its component across the chord fell
-                // short of the true error on the test springs)
-                hermite_error(third, prev, ds, h, None)
-            }
-            // no neighbour of comparable length (the first step, after a
-            // remesh or a change of scale): the error measured at the
-            // midpoint, where the Hermite remainder τ²(1 − τ)² peaks
-            _ => match self.correct(0.5 * ds, false) {
-                Ok(mid) => {
-                    let (pm, sm) = self.diagram_of(&mid.x, &mid.tangent);
-                    let hm = hermite_at((p0, s0), (p1, s1), ds, 0.5);
-                    MIDPOINT_SAFETY * across(pm, sm, hm)
+        let start = self.start_jet();
+        let end = self.jet(&c.x, &c.tangent);
+        let mut chord = c.x.clone();
+        chord.axpy(-1.0, &self.x0.clone(), &free);
+        let h = hermite::length(self.norm(&chord), &start, &end);
+        let fifth = hermite::fifth(&start, &end, h);
+        let error = if !(fifth[0].is_finite() && fifth[1].is_finite()) {
+            // no curvature at an end: no interpolant to trust
+            f64::INFINITY
+        } else {
+            match self.last_fifth {
+                Some((prev, h_prev)) if comparable(h_prev, h) => {
+                    hermite::error(fifth, prev, h, h_prev)
                 }
-                Err(_) => f64::INFINITY,
-            },
+                // no neighbour of comparable length (the first step, after a
+                // remesh or a change of scale): the error measured at the
+                // midpoint, where the remainder τ³(1 − τ)³ peaks
+                _ => match self.correct(0.5 * ds, false) {
+                    Ok(mid) => {
+                        let (pm, sm) = self.diagram_of(&mid.x, &mid.tangent);
+                        let hm = hermite::at(&start, &end, h, 0.5);
+                        MIDPOINT_SAFETY * across(pm, sm, hm)
+                    }
+                    Err(_) => f64::INFINITY,
+                },
+            }
         };
+        let (p0, s0, p1, s1) = (start.point, start.slope, end.point, end.slope);
         // (a turn over a chord below a hundredth of the plane's unit is a
         // corner the interpolation error already resolves)
         let chord = (p1[0] - p0[0]).abs().max((p1[1] - p0[1]).abs());
@@ -163,36 +187,38 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
             || error > INTERPOLATION_REJECT * tol;
         if too_far && self.ds > self.cont.ds_min {
             let by_turn = (0.6 * self.cont.max_angle / turn).min(0.5 * MAX_DRIFT / drift);
-            self.ds =
-                (ds * hermite_factor(error, tol).min(by_turn).max(0.25)).max(self.cont.ds_min);
+            self.ds = (ds * interpolation_factor(error, tol).min(by_turn).max(0.25))
+                .max(self.cont.ds_min);
             self.factored_at_x0 = false;
             self.rejected += 1;
             self.rejections.push(self.ds);
             return None;
         }
         self.angle = self.angle.max(turn);
-        Some((third, error))
+        Some(StepFit {
+            length: h,
+            fifth,
+            error,
+            end,
+        })
     }
 
-    /// The interpolation error of the step x₀ → `c` measured at the points
-    /// located inside it (at arclengths `s` ∈ (0, ds)): across the branch
-    /// from each to the step's Hermite interpolant.
+    /// The interpolation error of the step x₀ → `fit.end` measured at the
+    /// points located inside it (at arclengths `s` ∈ (0, ds)): across the
+    /// branch from each to the step's interpolant.
     pub(super) fn located_interpolation_error(
-        &self,
-        c: &super::corrector::Corrected,
+        &mut self,
+        fit: &StepFit,
         ds: f64,
         located: &[(State, State, f64)],
     ) -> f64 {
-        let ends = (
-            self.diagram_of(&self.x0, &self.t0),
-            self.diagram_of(&c.x, &c.tangent),
-        );
+        let start = self.start_jet();
         located
             .iter()
             .filter(|(.., s)| *s > 0.0 && *s < ds)
             .map(|(x, t, s)| {
                 let (p, slope) = self.diagram_of(x, t);
-                across(p, slope, hermite_at(ends.0, ends.1, ds, s / ds))
+                across(p, slope, hermite::at(&start, &fit.end, fit.length, s / ds))
             })
             .fold(0.0, f64::max)
     }
@@ -232,7 +258,8 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
             let want = self.intervals_for(worst, 0.25 * tol);
             self.remeshes_this_step += 1;
             if let Ok(flipped) = self.remesh(want.max(nn + nn / 4 + 1).min(limit)) {
-                self.last_third = None;
+                self.last_fifth = None;
+                self.jet0 = None;
                 self.fold_behind |= flipped && self.cont.folds;
                 return StepCheck::Remeshed;
             }

@@ -1,16 +1,22 @@
-//! Dense output: the cubic Hermite interpolant of a curve whose points
-//! carry their slopes, and what a user reads off it.
+//! Dense output: the Hermite interpolant of a curve whose points carry
+//! their slopes (and curvatures), and what a user reads off it.
 //!
-//! Between points i and i+1, with parameter step h = t_{i+1} − t_i and
-//! slopes x′ = dx/dt (x the extension or the force), in τ = (t − t_i)/h:
+//! Between points i and i+1, with parameter step h = t_{i+1} − t_i, in
+//! τ = (t − t_i)/h, each axis x (the extension or the force) is the
+//! polynomial Σ c_k τ^k that matches the ends' values, slopes x′ = dx/dt
+//! (v = h x′) and, where both ends carry them, curvatures x″ = d²x/dt²
+//! (a = h² x″), with Δ = x_{i+1} − x_i:
 //!
 //! ```text
-//!   x(τ) = x_i + h x′_i τ + (3 (x_{i+1} − x_i) − h (2 x′_i + x′_{i+1})) τ²
-//!              + (2 (x_i − x_{i+1}) + h (x′_i + x′_{i+1})) τ³
+//!   quintic:  c = (x_i, v_i, a_i/2, 10Δ − 6v_i − 4v_{i+1} − (3a_i − a_{i+1})/2,
+//!                  −15Δ + 8v_i + 7v_{i+1} + (3a_i − 2a_{i+1})/2,
+//!                  6Δ − 3v_i − 3v_{i+1} − (a_i − a_{i+1})/2)
+//!   cubic:    c = (x_i, v_i, 3Δ − 2v_i − v_{i+1}, −2Δ + v_i + v_{i+1})
 //! ```
 //!
-//! A segment next to a point without a finite slope, or whose parameter
-//! does not increase, is linear in τ.
+//! The quintic's error is h⁶ ‖x⁽⁶⁾‖ / 46080, the cubic's h⁴ ‖x⁗‖ / 384. A
+//! segment next to a point without a finite slope, or whose parameter does
+//! not increase, is linear in τ.
 
 use super::{ForceExtension, ForcePoint};
 
@@ -31,39 +37,98 @@ impl Slope {
     }
 }
 
-/// The cubic (or linear) x(τ) = c₀ + c₁τ + c₂τ² + c₃τ³ of one axis on one
-/// segment.
-#[derive(Debug, Clone, Copy)]
-struct Cubic([f64; 4]);
+/// The second derivative of a curve point along the curve's parameter t:
+/// (d²Δz/dt², d²F/dt²).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Curvature {
+    /// d²Δz/dt².
+    pub extension: f64,
+    /// d²F/dt² (the physical force, as [`ForcePoint::force`]).
+    pub force: f64,
+}
 
-impl Cubic {
-    fn hermite(x0: f64, x1: f64, d0: f64, d1: f64) -> Self {
-        Cubic([
-            x0,
-            d0,
-            3.0 * (x1 - x0) - 2.0 * d0 - d1,
-            2.0 * (x0 - x1) + d0 + d1,
+impl Curvature {
+    fn is_finite(&self) -> bool {
+        self.extension.is_finite() && self.force.is_finite()
+    }
+}
+
+/// Subintervals of [0, 1] on which a segment's derivative is sampled for
+/// sign changes when the segment is a quintic (a pair of turning points
+/// closer than 1/64 of a segment, a wiggle far below any interpolant's
+/// accuracy, may be seen as none).
+const TURNING_SAMPLES: usize = 64;
+
+/// The polynomial x(τ) = Σ c_k τ^k (degree ≤ 5) of one axis on one segment.
+#[derive(Debug, Clone, Copy)]
+struct Segment([f64; 6]);
+
+impl Segment {
+    fn quintic(x: (f64, f64), v: (f64, f64), a: (f64, f64)) -> Self {
+        let d = x.1 - x.0;
+        Segment([
+            x.0,
+            v.0,
+            0.5 * a.0,
+            10.0 * d - 6.0 * v.0 - 4.0 * v.1 - 0.5 * (3.0 * a.0 - a.1),
+            -15.0 * d + 8.0 * v.0 + 7.0 * v.1 + 0.5 * (3.0 * a.0 - 2.0 * a.1),
+            6.0 * d - 3.0 * v.0 - 3.0 * v.1 - 0.5 * (a.0 - a.1),
+        ])
+    }
+
+    fn cubic(x: (f64, f64), v: (f64, f64)) -> Self {
+        let d = x.1 - x.0;
+        Segment([
+            x.0,
+            v.0,
+            3.0 * d - 2.0 * v.0 - v.1,
+            -2.0 * d + v.0 + v.1,
+            0.0,
+            0.0,
         ])
     }
 
     fn linear(x0: f64, x1: f64) -> Self {
-        Cubic([x0, x1 - x0, 0.0, 0.0])
+        Segment([x0, x1 - x0, 0.0, 0.0, 0.0, 0.0])
     }
 
     fn at(&self, t: f64) -> f64 {
-        let [a, b, c, d] = self.0;
-        a + t * (b + t * (c + t * d))
+        self.0.iter().rev().fold(0.0, |acc, c| acc * t + c)
     }
 
-    /// The τ ∈ [0, 1] where the cubic equals `v`, in increasing order:
-    /// bisection on each monotone piece between the zeros of its
-    /// derivative.
-    fn solve(&self, v: f64) -> Vec<f64> {
-        let [_, b, c, d] = self.0;
-        let mut cuts = vec![0.0];
+    fn derivative_at(&self, t: f64) -> f64 {
+        self.0
+            .iter()
+            .enumerate()
+            .skip(1)
+            .rev()
+            .fold(0.0, |acc, (k, c)| acc * t + k as f64 * c)
+    }
+
+    /// The turning points τ ∈ (0, 1), in increasing order: the real roots
+    /// of the derivative, in closed form for a cubic, by bisection of its
+    /// sign changes on [`TURNING_SAMPLES`] subintervals for a quintic.
+    fn turning_points(&self) -> Vec<f64> {
+        let [_, b, c, d, e, f] = self.0;
+        let mut crit = Vec::new();
+        if e != 0.0 || f != 0.0 {
+            let mut lo = 0.0;
+            let mut flo = self.derivative_at(lo);
+            for i in 1..=TURNING_SAMPLES {
+                let hi = i as f64 / TURNING_SAMPLES as f64;
+                let fhi = self.derivative_at(hi);
+                if flo * fhi < 0.0 {
+                    crit.push(bisect(|t| self.derivative_at(t), lo, hi, flo));
+                } else if fhi == 0.0 && i < TURNING_SAMPLES {
+                    crit.push(hi);
+                }
+                (lo, flo) = (hi, fhi);
+            }
+            return crit;
+        }
         // x'(τ) = b + 2cτ + 3dτ²
         let (qa, qb, qc) = (3.0 * d, 2.0 * c, b);
-        let mut crit = Vec::new();
         if qa.abs() > 1e-14 * (qb.abs() + qc.abs()) {
             let disc = qb * qb - 4.0 * qa * qc;
             if disc >= 0.0 {
@@ -78,11 +143,19 @@ impl Cubic {
             crit.push(-qc / qb);
         }
         crit.sort_by(f64::total_cmp);
-        cuts.extend(crit.into_iter().filter(|t| *t > 0.0 && *t < 1.0));
+        crit.retain(|t| *t > 0.0 && *t < 1.0);
+        crit
+    }
+
+    /// The τ ∈ [0, 1] where the segment equals `v`, in increasing order:
+    /// bisection on each monotone piece between its turning points.
+    fn solve(&self, v: f64) -> Vec<f64> {
+        let mut cuts = vec![0.0];
+        cuts.extend(self.turning_points());
         cuts.push(1.0);
         let mut roots: Vec<f64> = Vec::new();
         for w in cuts.windows(2) {
-            let (mut lo, mut hi) = (w[0], w[1]);
+            let (lo, hi) = (w[0], w[1]);
             let (flo, fhi) = (self.at(lo) - v, self.at(hi) - v);
             if flo == 0.0 {
                 roots.push(lo);
@@ -95,30 +168,48 @@ impl Cubic {
             if flo * fhi > 0.0 {
                 continue;
             }
-            for _ in 0..200 {
-                let mid = 0.5 * (lo + hi);
-                if mid <= lo || mid >= hi {
-                    break;
-                }
-                if (self.at(mid) - v) * flo > 0.0 {
-                    lo = mid;
-                } else {
-                    hi = mid;
-                }
-            }
-            roots.push(0.5 * (lo + hi));
+            roots.push(bisect(|t| self.at(t) - v, lo, hi, flo));
         }
         roots.dedup_by(|a, b| (*a - *b).abs() <= 4.0 * f64::EPSILON);
         roots
     }
 }
 
+/// The root of `f` in [lo, hi] (f(lo) = `flo`, f(hi) of the other sign),
+/// by bisection to the last bit.
+fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64, flo: f64) -> f64 {
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if f(mid) * flo > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
 impl ForceExtension {
     /// Appends a point with its slope along the parameter (the data of the
-    /// dense output).
+    /// cubic dense output).
     pub fn push_with_slope(&mut self, point: ForcePoint, slope: Slope) {
+        self.align_derivatives();
         self.points.push(point);
         self.slopes.push(Some(slope));
+        self.curvatures.push(None);
+    }
+
+    /// Appends a point with its slope and curvature along the parameter
+    /// (the data of the quintic dense output, used on the segments whose
+    /// both ends have them).
+    pub fn push_with_curvature(&mut self, point: ForcePoint, slope: Slope, curvature: Curvature) {
+        self.align_derivatives();
+        self.points.push(point);
+        self.slopes.push(Some(slope));
+        self.curvatures.push(Some(curvature));
     }
 
     /// The slope of point `i`, or `None` where none was given (or past the
@@ -128,26 +219,74 @@ impl ForceExtension {
         self.slopes.get(i).copied().flatten()
     }
 
-    /// The two cubics (extension, force) of segment i (points i, i+1).
-    fn segment(&self, i: usize) -> (Cubic, Cubic) {
+    /// The curvature of point `i`, or `None` where none was given (or
+    /// past the end).
+    #[must_use]
+    pub fn curvature(&self, i: usize) -> Option<Curvature> {
+        self.curvatures.get(i).copied().flatten()
+    }
+
+    /// The two polynomials (extension, force) of segment i (points i, i+1).
+    fn segment(&self, i: usize) -> (Segment, Segment) {
         let (a, b) = (self.points[i], self.points[i + 1]);
         let h = b.parameter - a.parameter;
-        if let (Some(sa), Some(sb)) = (self.slope(i), self.slope(i + 1))
-            && sa.is_finite()
-            && sb.is_finite()
-            && h > 0.0
-            && h.is_finite()
-        {
-            (
-                Cubic::hermite(a.extension, b.extension, h * sa.extension, h * sb.extension),
-                Cubic::hermite(a.force, b.force, h * sa.force, h * sb.force),
-            )
-        } else {
-            (
-                Cubic::linear(a.extension, b.extension),
-                Cubic::linear(a.force, b.force),
-            )
+        let ends = (a.extension, b.extension);
+        let forces = (a.force, b.force);
+        let (Some(sa), Some(sb)) = (self.slope(i), self.slope(i + 1)) else {
+            return (
+                Segment::linear(ends.0, ends.1),
+                Segment::linear(forces.0, forces.1),
+            );
+        };
+        if !(sa.is_finite() && sb.is_finite() && h > 0.0 && h.is_finite()) {
+            return (
+                Segment::linear(ends.0, ends.1),
+                Segment::linear(forces.0, forces.1),
+            );
         }
+        let v = (
+            (h * sa.extension, h * sb.extension),
+            (h * sa.force, h * sb.force),
+        );
+        match (self.curvature(i), self.curvature(i + 1)) {
+            (Some(ca), Some(cb)) if ca.is_finite() && cb.is_finite() => {
+                let h2 = h * h;
+                (
+                    Segment::quintic(ends, v.0, (h2 * ca.extension, h2 * cb.extension)),
+                    Segment::quintic(forces, v.1, (h2 * ca.force, h2 * cb.force)),
+                )
+            }
+            _ => (Segment::cubic(ends, v.0), Segment::cubic(forces, v.1)),
+        }
+    }
+
+    /// The point of the interpolant on segment `i` (points i, i+1) at
+    /// τ ∈ [0, 1] (module docs), or `None` past the last segment.
+    ///
+    /// ```
+    /// use hockle::curve::Slope;
+    /// use hockle::{ForceExtension, ForcePoint, ForceScale};
+    /// let mut c = ForceExtension::new("cubic", "t", ForceScale::of_coils(1)?);
+    /// c.push_with_slope(ForcePoint { extension: 0.0, force: 0.0, parameter: 0.0 },
+    ///                   Slope { extension: 1.0, force: 0.0 });
+    /// c.push_with_slope(ForcePoint { extension: 1.0, force: 1.0, parameter: 1.0 },
+    ///                   Slope { extension: 1.0, force: 3.0 });
+    /// let p = c.at(0, 0.5).unwrap();
+    /// assert!((p.extension - 0.5).abs() < 1e-15 && (p.force - 0.125).abs() < 1e-15);
+    /// # Ok::<(), hockle::Error>(())
+    /// ```
+    #[must_use]
+    pub fn at(&self, segment: usize, tau: f64) -> Option<ForcePoint> {
+        if segment + 1 >= self.points.len() {
+            return None;
+        }
+        let (x, f) = self.segment(segment);
+        let (a, b) = (self.points[segment], self.points[segment + 1]);
+        Some(ForcePoint {
+            extension: x.at(tau),
+            force: f.at(tau),
+            parameter: a.parameter + tau * (b.parameter - a.parameter),
+        })
     }
 
     /// Every point of the interpolant where `axis(point) = v`, in curve
@@ -187,9 +326,10 @@ impl ForceExtension {
 
     /// Every force F (physical, as [`ForcePoint::force`]) at which the
     /// curve passes through the extension Δz, in curve order: several on
-    /// a multivalued stretch, none outside the curve. Read off the cubic
-    /// Hermite interpolant of the points and their slopes (module docs;
-    /// linear where slopes are unknown).
+    /// a multivalued stretch, none outside the curve. Read off the Hermite
+    /// interpolant of the points, their slopes and curvatures (module docs;
+    /// cubic where curvatures are unknown, linear where slopes are
+    /// unknown).
     ///
     /// ```
     /// use hockle::curve::Slope;
@@ -273,6 +413,44 @@ mod tests {
     fn nodes_once() {
         let c = circle(4); // nodes at x = 1, 0, −1, 0, 1
         assert_eq!(c.force_at(-1.0).len(), 1);
+    }
+
+    /// With curvatures the interpolant is the quintic: x = t, F = t⁵ − t²
+    /// sampled at t = 0 and 1 with slopes and curvatures is read back
+    /// exactly, and a turning point inside the segment is seen (F = t⁵ − t²
+    /// falls to −0.3257 at t = (2/5)^(1/3) and rises again).
+    #[test]
+    fn quintic_with_curvatures() {
+        let mut c = ForceExtension::new("quintic", "t", ForceScale::of_coils(1).unwrap());
+        for t in [0.0_f64, 1.0] {
+            c.push_with_curvature(
+                ForcePoint {
+                    extension: t,
+                    force: t.powi(5) - t * t,
+                    parameter: t,
+                },
+                Slope {
+                    extension: 1.0,
+                    force: 5.0 * t.powi(4) - 2.0 * t,
+                },
+                Curvature {
+                    extension: 0.0,
+                    force: 20.0 * t.powi(3) - 2.0,
+                },
+            );
+        }
+        for t in [0.1, 0.37, 0.8] {
+            let p = c.at(0, t).unwrap();
+            assert!((p.force - (t.powi(5) - t * t)).abs() < 1e-15, "{p:?}");
+            assert_eq!(c.force_at(t).len(), 1);
+        }
+        let low = 0.4_f64.cbrt();
+        let f_low = low.powi(5) - low * low;
+        // F = −0.2 is crossed twice, before and after the turning point
+        let x = c.extension_at(-0.2);
+        assert_eq!(x.len(), 2, "{x:?}");
+        assert!(x[0] < low && x[1] > low);
+        assert!(c.extension_at(f_low - 1e-9).is_empty());
     }
 
     /// Without slopes the interpolant is linear.

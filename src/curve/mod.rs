@@ -9,7 +9,7 @@
 use std::io;
 
 mod dense;
-pub use dense::Slope;
+pub use dense::{Curvature, Slope};
 
 use crate::error::{Error, Result};
 
@@ -147,6 +147,8 @@ pub struct ForceExtension {
     points: Vec<ForcePoint>,
     #[cfg_attr(feature = "serde", serde(default))]
     slopes: Vec<Option<Slope>>,
+    #[cfg_attr(feature = "serde", serde(default))]
+    curvatures: Vec<Option<Curvature>>,
 }
 
 impl ForceExtension {
@@ -164,14 +166,24 @@ impl ForceExtension {
             scale,
             points: Vec::new(),
             slopes: Vec::new(),
+            curvatures: Vec::new(),
         }
     }
 
     /// Appends a point at the end of the curve, without a slope (the
     /// interpolant is linear next to it; see [`Self::push_with_slope`]).
     pub fn push(&mut self, point: ForcePoint) {
+        self.align_derivatives();
         self.points.push(point);
         self.slopes.push(None);
+        self.curvatures.push(None);
+    }
+
+    /// Pads the slopes and curvatures to one per point (a curve read from
+    /// a file written before they existed has none).
+    fn align_derivatives(&mut self) {
+        self.slopes.resize(self.points.len(), None);
+        self.curvatures.resize(self.points.len(), None);
     }
 
     /// What the curve is (a branch name, a model name).

@@ -29,8 +29,8 @@
 //! 1e-9, 7 below), the first mesh (n·1.45·tol^(−1/2m) intervals, at least
 //! 3 per coil, calibrated on the paper's spring), and through the
 //! continuation the mesh during the run (points checked against the
-//! halved mesh, remeshed by equidistribution), the steps (Hermite
-//! interpolation error, the tangent's angle, at most 0.4 rad, and its turn
+//! halved mesh, remeshed by equidistribution), the steps (the quintic
+//! Hermite interpolation error, the tangent's angle, at most 0.4 rad, and its turn
 //! in the plane, the corrector's drift), the Newton and the location
 //! tolerances. What the run achieved is [`PullRun::estimate`]. Branch-point
 //! detection is off (the rod's phase condition keeps the pull free of
@@ -45,7 +45,7 @@ use crate::bvp::{Collocation, Mesh, Solution};
 use crate::continuation::{
     Continuation, ErrorEstimate, Observer, Output, Point, PointKind, Steps, Termination, drive_into,
 };
-use crate::curve::{Fold, FoldKind, ForceExtension, ForcePoint, Slope};
+use crate::curve::{Curvature, Fold, FoldKind, ForceExtension, ForcePoint, Slope};
 use crate::error::{Error, Result};
 use crate::load::{Control, Target};
 
@@ -78,7 +78,7 @@ impl PullRun {
 
     /// The errors the run measured, in the plane (Δz, F/((2πn)²B)) of the
     /// paper's plots ([`ErrorEstimate`]): of the points against the halved
-    /// mesh, of the located folds, and of the cubic Hermite interpolant
+    /// mesh, of the located folds, and of the quintic Hermite interpolant
     /// between points ([`ForceExtension::force_at`]).
     #[must_use]
     pub fn estimate(&self) -> ErrorEstimate {
@@ -714,7 +714,22 @@ impl Recorder {
                     force: dg * scale,
                 },
             };
-            self.curve.push_with_slope(at, slope);
+            match p.diagram_curvature() {
+                Some([cl, cg]) => {
+                    let curvature = match self.rod.control() {
+                        Control::Force => Curvature {
+                            extension: cg,
+                            force: cl * scale,
+                        },
+                        Control::Extension => Curvature {
+                            extension: cl,
+                            force: cg * scale,
+                        },
+                    };
+                    self.curve.push_with_curvature(at, slope, curvature);
+                }
+                None => self.curve.push_with_slope(at, slope),
+            }
             self.loops.push(eq.loops());
             self.last_dl = dl;
         }

@@ -230,8 +230,12 @@ fn secondary_branches_branch_where_the_elastica_says() {
     )
     .unwrap();
     let mut best: Vec<Option<(f64, Solution)>> = vec![None; 5];
+    // (steps of at most 0.03 in arclength: the most planar point of a
+    // stretch is read off the run's points, and the tolerance alone would
+    // step over the stretches in a few long steps)
     Pull::new(rod, Target::Force(1.3))
         .intervals(64)
+        .step(1e-3, 1e-7, 0.03)
         .run(|p: &Point| {
             let e = Equilibrium::new(rod, p.solution().clone()).unwrap();
             let planarity = e.planarity();

@@ -22,8 +22,8 @@ use hockle::{FoldKind, Stiffness};
 use super::planar_guess::planar_guess;
 
 /// Every how many curve points the direct test samples the paper's curve
-/// (about 60 samples on the default pull's ~370 points).
-const EVERY: usize = 6;
+/// (about 90 samples on the default pull's ~180 points).
+const EVERY: usize = 2;
 
 /// Samples closer than this to a fold, in the (Δz, F/((2πn)²B)) plane of
 /// the paper's plots, are not compared. Measured (`cargo run --release

@@ -37,22 +37,7 @@ fn reference(rod: Rod, target: Target) -> PullRun {
         .unwrap()
 }
 
-/// A point of the cubic Hermite interpolant of `curve` on segment `i` at
-/// τ ∈ [0, 1], in (Δz, F/((2πn)²B)), written out from the points and
-/// slopes (not through the crate's own interpolant).
-fn hermite(curve: &ForceExtension, i: usize, t: f64) -> [f64; 2] {
-    let (a, b) = (curve.points()[i], curve.points()[i + 1]);
-    let (sa, sb) = (curve.slope(i).unwrap(), curve.slope(i + 1).unwrap());
-    let h = b.parameter - a.parameter;
-    let h00 = 2.0 * t.powi(3) - 3.0 * t * t + 1.0;
-    let h10 = t.powi(3) - 2.0 * t * t + t;
-    let h01 = -2.0 * t.powi(3) + 3.0 * t * t;
-    let h11 = t.powi(3) - t * t;
-    let scale = curve.force_scale();
-    let x = h00 * a.extension + h10 * h * sa.extension + h01 * b.extension + h11 * h * sb.extension;
-    let f = h00 * a.force + h10 * h * sa.force + h01 * b.force + h11 * h * sb.force;
-    [x, f / scale]
-}
+use crate::common::hermite;
 
 /// Max-norm distance from `p` to the reference curve's interpolant: the
 /// nearest segments by their sampled points, refined by golden section.
@@ -185,7 +170,7 @@ fn extension_control_meets_its_tolerance_and_says_so() {
 /// honesty checks above measure: at the midpoint of every segment of the
 /// paper's curve, the force written out here is among those `force_at`
 /// returns for its extension, and conversely (to 1e-12 relative: the
-/// cubic's roots by bisection to the last bits).
+/// polynomial's roots by bisection to the last bits).
 #[test]
 fn dense_output_reads_the_interpolant() {
     let run = Pull::new(rod(89.8, 10.0), Target::Force(3.0))

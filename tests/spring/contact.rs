@@ -7,7 +7,7 @@ use std::ops::ControlFlow;
 use hockle::Stiffness;
 use hockle::bvp::Solution;
 use hockle::continuation::{Point, PointKind};
-use hockle::rod::Equilibrium;
+use hockle::rod::{Equilibrium, Pull};
 use hockle::spring::{RodModel, Spring, Target};
 
 /// The closest approach of the unstressed helix: the coils one pitch
@@ -74,14 +74,8 @@ fn the_slinky_crosses_itself_at_very_small_force() {
         .with_strip_width(1e-4)
         .unwrap();
     let rod = RodModel::rod(&slinky).unwrap();
-    let mut shapes: Vec<Solution> = Vec::new();
     let pull = RodModel::default()
-        .pull_with_contact(&slinky, Target::Force(0.01), |p: &Point| {
-            if p.kind() != PointKind::Fold {
-                shapes.push(p.solution().clone());
-            }
-            ControlFlow::Continue(())
-        })
+        .pull_with_contact(&slinky, Target::Force(0.01), ())
         .unwrap();
     assert!(pull.reached_target(), "{pull}");
     // A strip of width 1e-4 (an eighth of the rest pitch) touches itself
@@ -89,11 +83,23 @@ fn the_slinky_crosses_itself_at_very_small_force() {
     let first = pull.first_contact().expect("the slinky touches itself");
     let scale = slinky.force_scale();
     assert!(pull.curve().points()[first].force / scale < 0.01);
-    // It crosses itself: the signed separation of the two closest strands
+    // It crosses itself: on the same pull with steps of at most 0.01 in
+    // arclength (the tolerance alone takes steps over which the closest
+    // pair of strands moves), the signed separation of the two closest strands
     // along their common normal, (r(t) − r(s))·(d3(s) × d3(t))/|…|,
     // changes sign between consecutive points whose closest pairs are the
     // same strands (arclengths within 0.01); the distance then passes
     // through zero, whatever the strip's width.
+    let mut shapes: Vec<Solution> = Vec::new();
+    Pull::new(rod, Target::Force(0.01))
+        .step(1e-3, 1e-7, 0.01)
+        .run(|p: &Point| {
+            if p.kind() != PointKind::Fold {
+                shapes.push(p.solution().clone());
+            }
+            ControlFlow::Continue(())
+        })
+        .unwrap();
     let signed: Vec<(f64, f64, f64)> = shapes
         .iter()
         .map(|sol| {

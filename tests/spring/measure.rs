@@ -2,9 +2,10 @@
 //! and not by the crate: shared by `tests/spring/choice.rs` and
 //! `examples/models.rs` (which includes this file by path).
 //!
-//! A curve is what a [`Response`] returns: its points joined by their cubic
-//! Hermite interpolant (written out from the points and slopes; linear where
-//! a slope is missing), and its located folds as points of their own (the
+//! A curve is what a [`Response`] returns: its points joined by their
+//! Hermite interpolant (`common::hermite`, written out from the points,
+//! slopes and curvatures; linear where a slope is missing), and its located
+//! folds as points of their own (the
 //! curve's points exclude them; folds read off the curve itself are not
 //! drawn). Distances are
 //! max-norm in (Δz, F/((2πn)²B)).
@@ -80,7 +81,7 @@ impl Drawn<'_> {
     /// its largest gap between samples, so pieces are refined (golden
     /// section on each eighth) in the order of that bound until it exceeds
     /// the best distance found.
-    fn distance_to(&self, p: [f64; 2]) -> f64 {
+    pub fn distance_to(&self, p: [f64; 2]) -> f64 {
         let d = |q: [f64; 2]| (q[0] - p[0]).abs().max((q[1] - p[1]).abs());
         let mut bounds: Vec<(f64, usize)> = (0..self.pieces.len())
             .map(|k| {
@@ -149,27 +150,4 @@ pub fn both_ways(a: &Drawn<'_>, b: &Drawn<'_>) -> f64 {
     a.distance(b).max(b.distance(a))
 }
 
-/// A point of the cubic Hermite interpolant of segment `i` of `c` at τ, in
-/// (Δz, F/((2πn)²B)); linear where a slope is missing.
-pub fn hermite(c: &ForceExtension, i: usize, t: f64) -> [f64; 2] {
-    let (a, b) = (c.points()[i], c.points()[i + 1]);
-    let scale = c.force_scale();
-    let h = b.parameter - a.parameter;
-    match (c.slope(i), c.slope(i + 1)) {
-        (Some(sa), Some(sb)) if h > 0.0 => {
-            let (t2, t3) = (t * t, t * t * t);
-            let (h00, h10) = (2.0 * t3 - 3.0 * t2 + 1.0, t3 - 2.0 * t2 + t);
-            let (h01, h11) = (-2.0 * t3 + 3.0 * t2, t3 - t2);
-            let x = h00 * a.extension
-                + h10 * h * sa.extension
-                + h01 * b.extension
-                + h11 * h * sb.extension;
-            let f = h00 * a.force + h10 * h * sa.force + h01 * b.force + h11 * h * sb.force;
-            [x, f / scale]
-        }
-        _ => [
-            a.extension + t * (b.extension - a.extension),
-            (a.force + t * (b.force - a.force)) / scale,
-        ],
-    }
-}
+pub use crate::common::hermite;

@@ -357,6 +357,12 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
         self.t[j] + self.tab.c[k] * self.h(j)
     }
 
+    /// Whether a factorisation is current (a chord corrector can start
+    /// from it after [`factor_border`](Self::factor_border)).
+    pub(crate) fn is_factored(&self) -> bool {
+        self.factored
+    }
+
     pub(crate) fn zero_state(&self) -> State {
         State {
             y: vec![0.0; (self.nn + 1) * self.n],

@@ -1,0 +1,111 @@
+//! The second derivative x'' of the branch at a point, and the point's jet
+//! (P, P', P'') in the diagram's plane: the data of the quintic
+//! interpolant of a step (`hermite.rs`).
+//!
+//! Differentiating F(x(s)) = 0 twice along the arclength s gives
+//!
+//! ```text
+//!   F_x x'' = −F_xx[x', x'],      ⟨x', x''⟩ = 0
+//! ```
+//!
+//! (the second from ⟨x', x'⟩ = 1). The first, bordered by the system's
+//! current border row b, [F_x; b] z = [−F_xx[x', x']; 0], is solved by
+//! iterative refinement preconditioned by the current factorisation (the
+//! corrector's, at or next to x), with F_x z and F_xx[x', x'] by central
+//! differences; z differs from x'' by a multiple of x' (F_x x' = 0), so
+//! x'' = z − ⟨z, x'⟩ x'. When the refinement does not contract, [F_x; b]
+//! is factored at x and the solve is direct.
+
+use super::Steps;
+use super::hermite::Jet;
+use crate::bvp::Problem;
+use crate::bvp::scaled_norm;
+use crate::bvp::system::State;
+
+/// Relative correction at which the refinement of z stops: the
+/// difference quotients carry about 1e-8 (`difference.rs`).
+const REFINED: f64 = 1e-8;
+
+/// Relative correction above which the refinement is abandoned for a
+/// direct solve on a new factorisation.
+const UNREFINED: f64 = 1e-5;
+
+impl<P: Problem + ?Sized> Steps<'_, P> {
+    /// x'' at `x` with unit tangent `t` (module docs); `None` when neither
+    /// the refinement nor a new factorisation gives it.
+    pub(super) fn second_derivative(&mut self, x: &State, t: &State) -> Option<State> {
+        let free = self.sys.free.clone();
+        let mut work = self.difference(x);
+        self.residual_second_derivative(x, t, &mut work).ok()?;
+        let w = work.out.clone();
+        let mut z = self.sys.zero_state();
+        let mut d = self.sys.zero_state();
+        // (the solver returns −J⁻¹ r)
+        self.sys.solve(&w, &mut z).ok()?;
+        let mut last = f64::INFINITY;
+        for _ in 0..6 {
+            self.residual_derivative(x, &z, &mut work).ok()?;
+            for (r, v) in work
+                .out
+                .stage
+                .iter_mut()
+                .chain(work.out.cont.iter_mut())
+                .chain(work.out.bc.iter_mut())
+                .chain(work.out.dense.iter_mut())
+                .zip(w.stage.iter().chain(&w.cont).chain(&w.bc).chain(&w.dense))
+            {
+                *r += v;
+            }
+            self.sys.solve(&work.out, &mut d).ok()?;
+            let nd = scaled_norm(&d, &z, &free);
+            if nd > 0.25 * last {
+                break;
+            }
+            z.axpy(1.0, &d, &free);
+            last = nd;
+            if nd <= REFINED {
+                break;
+            }
+        }
+        if last > UNREFINED {
+            self.sys.factor(x).ok()?;
+            self.sys.solve(&w, &mut z).ok()?;
+        }
+        let along = self.inner(&z, t);
+        z.axpy(-along, t, &free);
+        Some(z)
+    }
+
+    /// The jet (P, P', P'') of `x` with unit tangent `t` in the diagram's
+    /// plane; P'' is NaN when x'' cannot be had.
+    pub(super) fn jet(&mut self, x: &State, t: &State) -> Jet {
+        let (point, slope) = self.diagram_of(x, t);
+        let mut bend = f64::NAN;
+        let curvature = match self.second_derivative(x, t) {
+            Some(a) => {
+                bend = self.inner(&a, &a);
+                let len = self.sys.y_ref.len();
+                let (mut xcol, mut tcol, mut acol) =
+                    (vec![0.0; len], vec![0.0; len], vec![0.0; len]);
+                self.sys.collocation_values(x, &mut xcol);
+                self.sys.collocation_values(t, &mut tcol);
+                self.sys.collocation_values(&a, &mut acol);
+                self.cont.diagram.curvature(
+                    self.cont.parameter,
+                    self.sys.n,
+                    (x, &xcol),
+                    &tcol,
+                    (&a, &acol),
+                    &self.norm,
+                )
+            }
+            None => [f64::NAN; 2],
+        };
+        Jet {
+            point,
+            slope,
+            curvature,
+            bend,
+        }
+    }
+}
