@@ -4,9 +4,25 @@
 use super::Steps;
 use super::norm::IntegralNorm;
 use crate::bvp::system::{State, System};
-use crate::bvp::{Problem, newton, scaled_norm};
-use crate::error::Result;
+use crate::bvp::{NewtonStats, Problem, newton, scaled_norm};
+use crate::error::{Error, Result};
 use crate::linalg::Det;
+
+/// (robust10c) A corrector of a run with a tolerance whose Newton stalls
+/// (damping cannot reduce the correction, or the iterations run out) at a
+/// correction within this multiple of its tolerance has reached the
+/// rounding floor of its system: the point is kept. The tolerance is
+/// 1e-4 tol, so such a point is still within ~1e-2 tol by the same mapping;
+/// its noise can only raise the run's estimates (the mesh check and the
+/// interpolation compare independent solves), not hide an error.
+/// Measured: the rod at ν = −0.5 from F/((2πn)²B) ≈ 8 and n = 16 near its
+/// folds stall at 1e-12..1.5e-9 on meshes of 100–500 intervals (the floor
+/// grows with the mesh, with either linear solver), where the tolerance is
+/// 1e-10 (tol 1e-6): their steps shrank to the minimum and the run failed,
+/// and their mesh checks reported ∞ and doubled the mesh to the interval
+/// limit (16 min and more for one pull). 10 was not enough for n = 16
+/// (1.5e-9 after the quintic dense output).
+pub(super) const STUCK_FLOOR: f64 = 100.0;
 
 /// Sets the border row of `sys` to the hyperplane ⟨· − x, t⟩ = ds of the
 /// integral norm `norm` (on the system's mesh); `xcol`, `tcol` are work
@@ -124,7 +140,23 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         if reuse {
             self.sys.factor_border()?;
         }
-        let stats = newton(&mut self.sys, &mut x, self.opts, reuse)?;
+        let stats = match newton(&mut self.sys, &mut x, self.opts, reuse) {
+            Ok(stats) => stats,
+            // (robust10c) with a tolerance: Newton stuck at its rounding
+            // floor within `STUCK_FLOOR` times its tolerance is converged
+            // (counted as the most iterations, so the next step is shorter)
+            Err(
+                Error::NewtonDiverged { correction, .. }
+                | Error::NewtonNotConverged { correction, .. },
+            ) if self.cont.tolerance.is_some() && correction <= STUCK_FLOOR * self.opts.tol => {
+                NewtonStats {
+                    iterations: self.opts.max_iter,
+                    jacobians: 1,
+                    correction,
+                }
+            }
+            Err(e) => return Err(e),
+        };
         self.newton_iterations += u64::from(stats.iterations);
         // Without branch-point detection the determinant is not needed: when
         // the chord corrector converged fast on the old factorisation (with

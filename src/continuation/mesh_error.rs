@@ -19,11 +19,11 @@
 //! on from there).
 
 use super::Steps;
-use super::corrector::{border_rhs_solution, set_hyperplane};
+use super::corrector::{STUCK_FLOOR, border_rhs_solution, set_hyperplane};
 use super::norm::IntegralNorm;
 use crate::bvp::system::{State, System};
 use crate::bvp::{Mesh, NewtonOptions, Problem, density, equidistribute, newton, state_on_mesh};
-use crate::error::Result;
+use crate::error::{Error, Result};
 
 /// The error of a point is estimated as this multiple of its distance to
 /// the halved mesh's: the distance is e_N − e_2N with e_2N ≈ 2^(−2m) e_N,
@@ -175,6 +175,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             tol: (1e-2 * self.opts.tol).max(1e-12),
             max_iter: 12,
         };
+        let floor = STUCK_FLOOR * self.opts.tol;
         let Some(h) = self.halved.as_mut() else {
             unreachable!("set above")
         };
@@ -200,7 +201,18 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             // starts a chord corrector; Newton refreshes it when it
             // contracts too slowly
             let reuse = h.sys.is_factored() && h.sys.factor_border().is_ok();
-            newton(&mut h.sys, &mut fine, opts, reuse)?;
+            match newton(&mut h.sys, &mut fine, opts, reuse) {
+                Ok(_) => {}
+                // (robust10c) Newton stuck at its rounding floor above the
+                // check's tolerance, within the corrector's (`STUCK_FLOOR`):
+                // the point stands, instead of a check of ∞ that doubles
+                // the mesh
+                Err(
+                    Error::NewtonDiverged { correction, .. }
+                    | Error::NewtonNotConverged { correction, .. },
+                ) if correction <= floor => {}
+                Err(e) => return Err(e),
+            }
             if !fold {
                 return Ok((fine, f64::NAN));
             }

@@ -37,6 +37,16 @@ impl ElasticaModel {
     /// fold search per secondary branch, n − 1 of them.
     pub const MAX_SCAFFOLD_COILS: u32 = 221;
 
+    /// How closely a pull's last F/((2πn)²B) keeps, in the spring's units,
+    /// the value the elastica (B = 1) ended at, relative: the conversion
+    /// F·B/((2πn)²B) costs a few ulps where the physical force is a normal
+    /// double; 1e-13 leaves a margin of 100 over that, as
+    /// [`HelixModel::FORCE_ACCURACY`](super::HelixModel::FORCE_ACCURACY)
+    /// does. A subnormal physical force (B ≲ 1e-290) misses it: the pull is
+    /// refused. (The elastica itself ends on its force limit to 1e-9, see
+    /// [`Trace`].)
+    pub const FORCE_ACCURACY: f64 = 1e-13;
+
     /// An elastica model sampling each branch at `samples` points.
     ///
     /// # Errors
@@ -58,7 +68,8 @@ impl ElasticaModel {
     /// [`Error::UnreachableTarget`](crate::Error::UnreachableTarget) unless
     /// the force is finite and positive;
     /// [`Error::InvalidCount`](crate::Error::InvalidCount) for more than
-    /// [`ElasticaModel::MAX_SCAFFOLD_COILS`] coils, or more than
+    /// [`ElasticaModel::MAX_SCAFFOLD_COILS`] coils, fewer than 3 samples
+    /// with more than one coil, or more than
     /// [`MAX_POINTS`](crate::error::MAX_POINTS) points in all (n branches of `samples` points).
     pub fn scaffold(&self, spring: &Spring, max_force_scaled: f64) -> Result<Vec<ForceExtension>> {
         let target = max_force_scaled;
@@ -76,6 +87,15 @@ impl ElasticaModel {
                 value: u64::from(n),
                 allowed: "at most ElasticaModel::MAX_SCAFFOLD_COILS = 221 coils (n/j < 222), and \
                           coils × samples at most error::MAX_POINTS = 2^22 points",
+            });
+        }
+        if n > 1 && self.samples < 3 {
+            // (a secondary branch is drawn with both ends and its fold)
+            return Err(crate::Error::InvalidCount {
+                name: "samples",
+                value: self.samples as u64,
+                allowed: "at least 3 samples for a scaffold of more than one coil (a secondary \
+                          branch has both ends and its fold)",
             });
         }
         let trace = Trace::new()
@@ -99,8 +119,12 @@ impl Model for ElasticaModel {
 
     /// # Errors
     /// [`crate::Error::UnreachableTarget`] for a bad target;
-    /// [`crate::Error::OutsideModel`] for a push, or a spring whose
-    /// intrinsic strains are not those of its helix.
+    /// [`crate::Error::InvalidArgument`] named "target" for a force the
+    /// elastica cannot meet to 1e-9 (subnormal, [`Trace`]);
+    /// [`crate::Error::OutsideModel`] for a push, a spring whose
+    /// intrinsic strains are not those of its helix, or one whose physical
+    /// forces (2πn)²B·F are subnormal (they would miss the target by more
+    /// than [`ElasticaModel::FORCE_ACCURACY`]).
     fn pull_to(&self, spring: &Spring, target: Target) -> Result<Response> {
         let target = check_simple_target("elastica", spring, target)?;
         let n = spring.coils();
@@ -114,8 +138,37 @@ impl Model for ElasticaModel {
             .points(self.samples)
             .max_force_scaled(force_scaled)
             .scale_coils(n)
-            .run(n, Branch::Upsilon)?;
+            .run(n, Branch::Upsilon)
+            .map_err(|e| match e {
+                // the trace's limit is the user's target
+                crate::Error::InvalidArgument {
+                    name: "max_force_scaled",
+                    allowed,
+                    ..
+                } => crate::Error::InvalidArgument {
+                    name: "target",
+                    value: target.value(),
+                    allowed,
+                },
+                e => e,
+            })?;
+        let traced = curve.force_scaled(curve.len() - 1);
         let curve = in_units_of_b(curve, spring);
+        let converted = curve.force_scaled(curve.len() - 1);
+        let off = match (traced, converted) {
+            (Some(a), Some(b)) => (b - a).abs() / a.abs(),
+            _ => f64::NAN,
+        };
+        if off.is_nan() || off > Self::FORCE_ACCURACY {
+            // the physical forces (2πn)²B·F are subnormal: fewer than 53 bits
+            return Err(crate::Error::OutsideModel {
+                model: "elastica",
+                assumption: "forces in the spring's units keep their value to 1e-13 in double \
+                             precision; at this stiffness the physical force (2πn)²B·F is below \
+                             the smallest normal double (2.2e-308) and has fewer than 53 bits: \
+                             use a larger bending stiffness B",
+            });
+        }
         let stop = match target {
             Target::Force(_) => force_scaled * spring.force_scale(),
             Target::Extension(dz) => dz,

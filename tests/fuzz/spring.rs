@@ -103,23 +103,6 @@ fn model_refusal(e: &Error) -> bool {
     )
 }
 
-/// Findings of this suite in the models, not fixed here (they are not
-/// input checks; docs/ACCURACY.md lists them), recognised as narrowly as
-/// the failure allows so that anything else still fails: a model that
-/// says it reached its target with a last point not on it.
-///
-/// - `subnormal_force`: the elastica model of a spring whose forces are
-///   subnormal (B ≲ 1e-290): the last force has fewer than 53 bits and
-///   F/((2πn)²B) is off. (The helix model now meets its target to
-///   `HelixModel::FORCE_ACCURACY` or refuses it, see
-///   `found::helix_model_meets_a_force_or_says_it_cannot`; the elastica
-///   model's extension targets were another, fixed: see
-///   `found::elastica_extension_target_is_met_or_refused`.)
-fn known_miss(model: &str, resp: &Response) -> bool {
-    let last = resp.curve().points().last();
-    model == "elastica" && last.is_some_and(|p| p.force.abs() < 1e-290)
-}
-
 /// The models' constructors with hostile counts and `pull_to` with hostile
 /// targets.
 fn models(g: &mut Gen, r: &mut Report, spring: &Spring) {
@@ -177,8 +160,9 @@ fn models(g: &mut Gen, r: &mut Report, spring: &Spring) {
     match res {
         Ok(resp) => {
             r.check(valid_target, || format!("{} accepted", what()));
-            let known = known_miss(model.name(), &resp);
-            check_response(r, &resp, !known, &what);
+            // (the last model miss, the elastica's subnormal forces, is
+            // refused now: found_extremes::elastica_model_with_subnormal_forces_is_refused)
+            check_response(r, &resp, true, &what);
             response_entries(g, r, &resp);
         }
         Err(e) => r.check(
@@ -193,9 +177,10 @@ fn models(g: &mut Gen, r: &mut Report, spring: &Spring) {
                     !valid_target || !force_in_range(t, spring.force_scale())
                 }
                 // the elastica trace refuses a subnormal force limit
-                // (elastica docs: not met to 1e-9 in double precision)
+                // (elastica docs: not met to 1e-9 in double precision),
+                // named as the user's target
                 Error::InvalidArgument {
-                    name: "max_force_scaled",
+                    name: "target",
                     value,
                     ..
                 } => model.name() == "elastica" && value.abs() < f64::MIN_POSITIVE,
@@ -237,7 +222,8 @@ fn scaffold(r: &mut Report, m: &ElasticaModel, spring: &Spring, force: f64) {
                     ))
                 // a secondary branch needs 3 points (both ends and the
                 // fold); `ElasticaModel::new(2)` is valid for pulls
-                || (matches!(e, Error::InvalidCount { name: "points", value: 2, .. }))
+                || (spring.coils() > 1
+                    && matches!(e, Error::InvalidCount { name: "samples", value: 2, .. }))
                 || (!coils_ok && matches!(e, Error::InvalidCount { name: "coils", .. })),
             || format!("{}: {e}", what()),
         ),

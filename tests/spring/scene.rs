@@ -92,6 +92,13 @@ fn small_targets_are_met_and_the_rest_state_is_refused() {
 fn invalid_settings_are_errors_not_empty_curves() {
     let spring = Spring::paper();
     assert!(RodModel::default().intervals(0).pull(&spring, 1.0).is_err());
+    // (issue 10) a huge mesh is refused before any allocation, not aborted
+    for n in [usize::MAX, u32::MAX as usize] {
+        assert!(matches!(
+            RodModel::default().intervals(n).pull(&spring, 1.0),
+            Err(Error::InvalidCount { .. })
+        ));
+    }
     assert!(matches!(
         RodModel::default().points(8).pull(&spring, 1.0),
         Err(Error::InvalidCount { name: "points", .. })
