@@ -15,6 +15,13 @@ use crate::error::Result;
 /// tolerance after them is accepted, with its estimate).
 const REMESHES_PER_STEP: u32 = 4;
 
+/// (robust10c) The largest factor of Δs after a step rejected for skipping
+/// a fold pair, so that repeated rejections reach ds_min in a bounded
+/// number of tries (found by the long fuzz run: a rod on 7 intervals,
+/// m = 3, whose step was rejected so with factors tending to 1,
+/// Δs → 0.1333…).
+const SKIPPED_SHRINK: f64 = 0.5;
+
 /// The chord in the diagram's plane below which a step's turn is not
 /// limited.
 const TURN_CHORD: f64 = 1e-2;
@@ -187,8 +194,19 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
             || error > INTERPOLATION_REJECT * tol;
         if too_far && self.ds > self.cont.ds_min {
             let by_turn = (0.6 * self.cont.max_angle / turn).min(0.5 * MAX_DRIFT / drift);
-            self.ds = (ds * interpolation_factor(error, tol).min(by_turn).max(0.25))
-                .max(self.cont.ds_min);
+            // (robust10c) a step rejected for a skipped fold pair shrinks by
+            // `SKIPPED_SHRINK` at least: with a small interpolation error its
+            // factor tended to 1, retried ever closer to the same Δs and
+            // never reached ds_min (a hang inside one step); the other
+            // reasons give factors below 1 (turn, drift: < 0.6; error above
+            // half the tolerance: its own factor)
+            let skip = if skipped { SKIPPED_SHRINK } else { 1.0 };
+            self.ds = (ds
+                * interpolation_factor(error, tol)
+                    .min(by_turn)
+                    .min(skip)
+                    .max(0.25))
+            .max(self.cont.ds_min);
             self.factored_at_x0 = false;
             self.rejected += 1;
             self.rejections.push(self.ds);

@@ -186,3 +186,50 @@ fn a_pull_at_nu_minus_half_ends() {
         t => panic!("{t}: {run}"),
     }
 }
+
+/// Found by the long run (`spring_entries`, seed of `HOCKLE_FUZZ_ONLY=spring`)
+/// on main ddb76ea: `RodModel { intervals: 7, points: 3 }.pull_observed`
+/// of a spring of 2 coils at θ0 = 89.99° with A = 2, B = C = 1000 to
+/// F/((2πn)²B) = 1e-4 never returned. Its first step was rejected as
+/// skipping a fold pair while its interpolation error was small, and the
+/// retry factor tended to 1 (Δs 0.1908, 0.1394, 0.1341, 0.13344, … →
+/// 0.1333): a hang inside one step, with no point for the observer to stop.
+/// Now a step rejected for a skipped fold pair shrinks by at least
+/// `SKIPPED_SHRINK` = ½ (in src/continuation/tolerance.rs), so rejections
+/// reach the minimum step in a bounded number of tries; the run ends.
+#[test]
+fn a_rejected_step_shrinks_until_it_is_accepted() {
+    use hockle::continuation::{Observer, Point, Termination};
+    use hockle::rod::{Pull, Rod};
+    use std::ops::ControlFlow;
+    /// Stops after four points, as the fuzz suite's observer does.
+    struct Four(usize);
+    impl Observer for Four {
+        fn point(&mut self, _: &Point) -> ControlFlow<()> {
+            self.0 += 1;
+            if self.0 >= 4 {
+                ControlFlow::Break(())
+            } else {
+                ControlFlow::Continue(())
+            }
+        }
+    }
+    let rod = Rod::new(
+        2,
+        1.570_621_793_869_697_1,
+        Stiffness::new(2.0, 1000.0, 1000.0).unwrap(),
+    )
+    .unwrap();
+    let run = Pull::new(rod, Target::Force(1e-4))
+        .intervals(7)
+        .points(3)
+        .run(Four(0))
+        .unwrap();
+    assert!(
+        matches!(
+            run.termination(),
+            Termination::Stopped | Termination::ParameterValue(_)
+        ),
+        "{run}"
+    );
+}
