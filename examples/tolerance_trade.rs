@@ -32,9 +32,11 @@ use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use hockle::curve::ForceExtension;
 use hockle::rod::{Pull, PullRun, Rod};
 use hockle::{Stiffness, Target};
+
+#[path = "../tests/common/mod.rs"]
+mod common;
 
 /// How a run is set: by a tolerance, or by a fixed mesh (N, m) with the
 /// tolerance that sets its steps.
@@ -159,58 +161,11 @@ fn fold_error(run: &PullRun, reference: &PullRun) -> f64 {
     worst
 }
 
-/// The curve's own interpolant ([`ForceExtension::at`]) on segment `i` at
-/// τ ∈ [0, 1] in (Δz, F/((2πn)²B)).
-fn hermite(curve: &ForceExtension, i: usize, t: f64) -> [f64; 2] {
-    curve.at(i, t).map_or([f64::NAN; 2], |p| {
-        [p.extension, p.force / curve.force_scale()]
-    })
-}
-
-/// Max-norm distance from `p` to the interpolant of `reference`: the three
-/// nearest segments by eight samples each, then golden section on each
-/// eighth of them.
-fn distance_to(reference: &ForceExtension, p: [f64; 2]) -> f64 {
-    let d = |q: [f64; 2]| (q[0] - p[0]).abs().max((q[1] - p[1]).abs());
-    let mut near: Vec<(f64, usize)> = (0..reference.len() - 1)
-        .map(|i| {
-            let best = (0..=8)
-                .map(|k| d(hermite(reference, i, f64::from(k) / 8.0)))
-                .fold(f64::INFINITY, f64::min);
-            (best, i)
-        })
-        .collect();
-    near.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let g = 0.618_033_988_749_895;
-    let mut best = f64::INFINITY;
-    for &(_, i) in near.iter().take(3) {
-        for k in 0..8 {
-            let (mut lo, mut hi) = (f64::from(k) / 8.0, f64::from(k + 1) / 8.0);
-            for _ in 0..60 {
-                let (a, b) = (hi - g * (hi - lo), lo + g * (hi - lo));
-                if d(hermite(reference, i, a)) < d(hermite(reference, i, b)) {
-                    hi = b;
-                } else {
-                    lo = a;
-                }
-            }
-            best = best.min(d(hermite(reference, i, 0.5 * (lo + hi))));
-        }
-    }
-    best
-}
-
 /// The largest distance from the run's interpolant (points and segment
-/// midpoints) to the reference's.
+/// midpoints) to the reference's (`tests/common`'s measure, shared with
+/// `tests/rod/tolerance.rs`).
 fn curve_error(run: &PullRun, reference: &PullRun) -> f64 {
-    let c = run.curve();
-    let mut worst: f64 = 0.0;
-    for i in 0..c.len() - 1 {
-        for t in [0.0, 0.5] {
-            worst = worst.max(distance_to(reference.curve(), hermite(c, i, t)));
-        }
-    }
-    worst
+    common::curve_distance(run.curve(), reference.curve())
 }
 
 /// One measured row.

@@ -80,3 +80,49 @@ pub fn hermite(c: &hockle::ForceExtension, i: usize, t: f64) -> [f64; 2] {
         ],
     }
 }
+
+/// Max-norm distance in (Δz, F/((2πn)²B)) from `p` to the interpolant of
+/// `reference` ([`hermite`]): the three nearest segments by nine samples
+/// each, then golden section on each eighth of them.
+pub fn distance_to_curve(reference: &hockle::ForceExtension, p: [f64; 2]) -> f64 {
+    let d = |q: [f64; 2]| (q[0] - p[0]).abs().max((q[1] - p[1]).abs());
+    let mut near: Vec<(f64, usize)> = (0..reference.len() - 1)
+        .map(|i| {
+            let best = (0..=8)
+                .map(|k| d(hermite(reference, i, f64::from(k) / 8.0)))
+                .fold(f64::INFINITY, f64::min);
+            (best, i)
+        })
+        .collect();
+    near.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let g = 0.618_033_988_749_895;
+    let mut best = f64::INFINITY;
+    for &(_, i) in near.iter().take(3) {
+        for k in 0..8 {
+            let (mut lo, mut hi) = (f64::from(k) / 8.0, f64::from(k + 1) / 8.0);
+            for _ in 0..60 {
+                let (a, b) = (hi - g * (hi - lo), lo + g * (hi - lo));
+                if d(hermite(reference, i, a)) < d(hermite(reference, i, b)) {
+                    hi = b;
+                } else {
+                    lo = a;
+                }
+            }
+            best = best.min(d(hermite(reference, i, 0.5 * (lo + hi))));
+        }
+    }
+    best
+}
+
+/// The largest distance from the interpolant of `curve` (its points and
+/// the midpoints of its segments, where the interpolant's error peaks) to
+/// the interpolant of `reference`.
+pub fn curve_distance(curve: &hockle::ForceExtension, reference: &hockle::ForceExtension) -> f64 {
+    let mut worst: f64 = 0.0;
+    for i in 0..curve.len() - 1 {
+        for t in [0.0, 0.5] {
+            worst = worst.max(distance_to_curve(reference, hermite(curve, i, t)));
+        }
+    }
+    worst
+}

@@ -8,7 +8,7 @@
 //! of docs/ACCURACY.md) at tolerance 1e-8 (steps, Newton and location),
 //! compared through its dense output.
 
-use hockle::curve::ForceExtension;
+use crate::common::hermite;
 use hockle::rod::{Pull, PullRun, Rod};
 use hockle::{Stiffness, Target};
 
@@ -37,53 +37,10 @@ fn reference(rod: Rod, target: Target) -> PullRun {
         .unwrap()
 }
 
-use crate::common::hermite;
-
-/// Max-norm distance from `p` to the reference curve's interpolant: the
-/// nearest segments by their sampled points, refined by golden section.
-fn distance_to(reference: &ForceExtension, p: [f64; 2]) -> f64 {
-    let d = |q: [f64; 2]| (q[0] - p[0]).abs().max((q[1] - p[1]).abs());
-    let segments = reference.len() - 1;
-    let mut candidates: Vec<(f64, usize)> = (0..segments)
-        .map(|i| {
-            let best = (0..=8)
-                .map(|k| d(hermite(reference, i, f64::from(k) / 8.0)))
-                .fold(f64::INFINITY, f64::min);
-            (best, i)
-        })
-        .collect();
-    candidates.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let mut best = f64::INFINITY;
-    for &(_, i) in candidates.iter().take(3) {
-        // golden section on each eighth of the segment
-        for k in 0..8 {
-            let (mut lo, mut hi) = (f64::from(k) / 8.0, f64::from(k + 1) / 8.0);
-            for _ in 0..60 {
-                let a = hi - 0.618_033_988_749_895 * (hi - lo);
-                let b = lo + 0.618_033_988_749_895 * (hi - lo);
-                if d(hermite(reference, i, a)) < d(hermite(reference, i, b)) {
-                    hi = b;
-                } else {
-                    lo = a;
-                }
-            }
-            best = best.min(d(hermite(reference, i, 0.5 * (lo + hi))));
-        }
-    }
-    best
-}
-
-/// The largest distance from the run's interpolant (its points and the
-/// midpoints of its segments) to the reference's.
+/// The largest distance from the run's interpolant to the reference's
+/// (`common::curve_distance`).
 fn curve_error(run: &PullRun, reference: &PullRun) -> f64 {
-    let c = run.curve();
-    let mut worst: f64 = 0.0;
-    for i in 0..c.len() - 1 {
-        for t in [0.0, 0.5] {
-            worst = worst.max(distance_to(reference.curve(), hermite(c, i, t)));
-        }
-    }
-    worst
+    crate::common::curve_distance(run.curve(), reference.curve())
 }
 
 /// The largest distance between the run's folds and the reference's.
