@@ -205,10 +205,7 @@ impl CuspSearch {
         if from == to {
             return Ok(Followed::Reached(Box::new(start.clone())));
         }
-        let scale = family.rod().scale().value();
-        let mut w = [1.0; Rod::DIM];
-        w[7..10].fill(1.0 / (scale * scale));
-        w[10..13].fill(1e-3);
+        let w = family.rod().norm_weights();
         let settings = Continuation::new(parameter)
             .solver(self.solver(family)?)
             .weights(&w)
@@ -268,11 +265,11 @@ impl CuspSearch {
         ds: f64,
         observer: O,
     ) -> Result<crate::continuation::FoldCurve> {
-        let scale = family.rod().scale().value();
+        // the rod's weights on the state and on the null vector alike
+        let rod_weights = family.rod().norm_weights();
         let mut w = [1.0; 2 * Rod::DIM];
         for half in [0, Rod::DIM] {
-            w[half + 7..half + 10].fill(1.0 / (scale * scale));
-            w[half + 10..half + 13].fill(1e-3);
+            w[half..half + Rod::DIM].copy_from_slice(&rod_weights);
         }
         let problem = crate::continuation::FoldProblem::new(family, &[]);
         let settings = Continuation::new(nu)

@@ -245,6 +245,21 @@ impl Rod {
         ForceScale::new(self.coils, self.b).expect("validated by Rod::new")
     }
 
+    /// The weights w_i of the continuation's integral norm
+    /// ⟨a, b⟩ = Σ_i w_i ∫₀¹ a_i b_i ds over this rod's state (r, q, F, M):
+    /// 1 on the position and the quaternion, 1/((2πn)²B)² on the force (of
+    /// the order of the force scale) and 1e-3 on the moment (module docs
+    /// of `rod::pull`); for a [`Continuation`](crate::continuation::Continuation)
+    /// of the rod outside a [`Pull`].
+    #[must_use]
+    pub fn norm_weights(&self) -> [f64; Rod::DIM] {
+        let scale = self.scale().value();
+        let mut w = [1.0; Rod::DIM];
+        w[7..10].fill(1.0 / (scale * scale));
+        w[10..13].fill(1e-3);
+        w
+    }
+
     /// The same rod under another [`Control`].
     #[must_use]
     pub fn with_control(mut self, control: Control) -> Self {

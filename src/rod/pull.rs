@@ -531,7 +531,7 @@ impl Pull {
         };
         let cont = Continuation::new(param)
             .solver(solver.clone())
-            .weights(&weights(scale))
+            .weights(&rod.norm_weights())
             .parameter_weight(theta)
             .step_bounds(self.ds_min, self.ds_max)
             .max_steps(self.max_steps)
@@ -752,16 +752,4 @@ fn relaxed_rest(solver: &Collocation, rod: &Rod, p0: &[f64; 3]) -> Result<Soluti
         }
     }
     Ok(rest)
-}
-
-/// Weights of the continuation norm (module docs).
-fn weights(scale: f64) -> [f64; 13] {
-    let mut w = [1.0; 13];
-    for wi in &mut w[7..10] {
-        *wi = 1.0 / (scale * scale);
-    }
-    for wi in &mut w[10..13] {
-        *wi = 1e-3;
-    }
-    w
 }

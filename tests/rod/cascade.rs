@@ -191,9 +191,7 @@ fn the_gauge_makes_no_branch_points_and_both_continuations_agree() {
     let s0 = solver.solve(&rod, |s: f64| rod.unstressed(s), &p).unwrap();
     p[Rod::FORCE] = 1e-4 * scale;
     let s1 = solver.solve(&rod, &s0, &p).unwrap();
-    let mut w = vec![1.0; 13];
-    w[7..10].fill(1.0 / (scale * scale));
-    w[10..13].fill(1e-3);
+    let w = rod.norm_weights();
     let branch = Continuation::new(Rod::FORCE)
         .solver(solver)
         .weights(&w)

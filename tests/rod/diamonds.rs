@@ -37,9 +37,7 @@ fn rod_branch_points(stiffness: Stiffness, e: Elastica, stop: f64) -> Vec<f64> {
         "{e}: the rod converged elsewhere (F = {})",
         first.force()
     );
-    let mut w = vec![1.0; 13];
-    w[7..10].fill(1.0 / (scale * scale));
-    w[10..13].fill(1e-3);
+    let w = rod.norm_weights();
     let branch = Continuation::new(Rod::FORCE)
         .solver(solver)
         .weights(&w)

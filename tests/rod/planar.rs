@@ -163,9 +163,7 @@ fn planar_branch_is_the_elastica_and_has_its_out_of_plane_branch_point() {
             &[row.force, row.extension, PI / 2.0],
         )
         .unwrap();
-    let mut w = vec![1.0; 13];
-    w[7..10].fill(1.0 / (scale * scale));
-    w[10..13].fill(1e-3);
+    let w = rod.norm_weights();
     let branch = Continuation::new(Rod::FORCE)
         .solver(solver)
         .weights(&w)
@@ -250,9 +248,7 @@ fn secondary_branches_branch_where_the_elastica_says() {
         })
         .unwrap();
     let rod90 = Rod::new(4, PI / 2.0, hockle::Stiffness::nikolai(10.0, 0.05).unwrap()).unwrap();
-    let mut w = vec![1.0; 13];
-    w[7..10].fill(1.0 / (scale * scale));
-    w[10..13].fill(1e-3);
+    let w = rod90.norm_weights();
     for j in [3_u32, 2] {
         let (_, sol) = best[j as usize].as_ref().expect("a near-planar stretch");
         let mut p = sol.parameters().to_vec();

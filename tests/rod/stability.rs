@@ -207,9 +207,7 @@ fn at_ninety_degrees_the_planar_branch_loses_stability_at_its_diamond() {
     let start = solver
         .solve(&rod, planar_guess(e), &[e.force(), e.extension(), PI / 2.0])
         .unwrap();
-    let mut w = vec![1.0; 13];
-    w[7..10].fill(1.0 / (scale * scale));
-    w[10..13].fill(1e-3);
+    let w = rod.norm_weights();
     let branch = Continuation::new(Rod::FORCE)
         .solver(solver)
         .weights(&w)
