@@ -176,6 +176,10 @@ mod tests {
         let ddp = |s: f64| [20.0 * s.powi(3) - 4.0, 1.0];
         let j = |s: f64| jet(p(s), dp(s), ddp(s));
         let f = fifth(&j(0.2), &j(0.7), 0.5);
+        // (P⁽⁵⁾ = 120 c₅/h⁵: the rounding of the c's, ~1e-15, over
+        // h⁵ = 0.03, times 120, is ~1e-11; 1e-8 leaves room and still
+        // tells 120 from any other fifth derivative; the interpolant
+        // itself is exact to the rounding of its six terms, 1e-14)
         assert!((f[0] - 120.0).abs() < 1e-8 && f[1].abs() < 1e-8, "{f:?}");
         let mid = at(&j(0.2), &j(0.7), 0.5, 0.3);
         let exact = p(0.35);

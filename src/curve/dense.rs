@@ -261,7 +261,8 @@ impl ForceExtension {
     }
 
     /// The point of the interpolant on segment `i` (points i, i+1) at
-    /// τ ∈ [0, 1] (module docs), or `None` past the last segment.
+    /// τ ∈ [0, 1] (module docs), or `None` past the last segment or for τ
+    /// outside [0, 1] (no extrapolation).
     ///
     /// ```
     /// use hockle::curve::Slope;
@@ -277,7 +278,7 @@ impl ForceExtension {
     /// ```
     #[must_use]
     pub fn at(&self, segment: usize, tau: f64) -> Option<ForcePoint> {
-        if segment + 1 >= self.points.len() {
+        if segment + 1 >= self.points.len() || !(0.0..=1.0).contains(&tau) {
             return None;
         }
         let (x, f) = self.segment(segment);
@@ -444,6 +445,8 @@ mod tests {
             assert!((p.force - (t.powi(5) - t * t)).abs() < 1e-15, "{p:?}");
             assert_eq!(c.force_at(t).len(), 1);
         }
+        // outside the segment (or past the last one) there is no point
+        assert!(c.at(0, 1.5).is_none() && c.at(0, f64::NAN).is_none() && c.at(1, 0.5).is_none());
         let low = 0.4_f64.cbrt();
         let f_low = low.powi(5) - low * low;
         // F = −0.2 is crossed twice, before and after the turning point
