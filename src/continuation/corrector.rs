@@ -198,7 +198,10 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
     /// refinement of [F_x(x); τ₀ᵀ] τ = e preconditioned by the current
     /// (chord) factorisation, with F_x(x)τ by
     /// [`residual_derivative`](Self::residual_derivative). The refinement
-    /// stops at a correction of 1e-10, or where the difference quotient's
+    /// stops at a correction of a tenth of
+    /// [`tangent_tolerance`](Self::tangent_tolerance) (the error left is
+    /// about the next correction, at most a third of this one at the
+    /// contraction ¼ it requires) but not below 1e-10, or where the difference quotient's
     /// rounding stalls it (about 1e-8 on the rod) if that is below
     /// [`tangent_tolerance`](Self::tangent_tolerance); `None` when it does
     /// not get there.
@@ -220,7 +223,7 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
                 return (prev <= enough).then_some(t);
             }
             t.axpy(1.0, &d, &free);
-            if nd <= 1e-10 {
+            if nd <= (0.1 * enough).max(1e-10) {
                 return Some(t);
             }
             prev = nd;

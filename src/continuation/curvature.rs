@@ -23,7 +23,13 @@ use crate::bvp::scaled_norm;
 use crate::bvp::system::State;
 
 /// Relative correction at which the refinement of z stops: the
-/// difference quotients carry about 1e-8 (`difference.rs`).
+/// difference quotients carry about 1e-8 (`difference.rs`). With a
+/// tolerance it stops at 1e-2 tol when that is larger: a relative error δ
+/// in P'' (the diagram's coordinates are O(1) functionals of the state)
+/// moves a step's quintic by at most max τ²(1 − τ)³/2 · h²δ(1 + |P''|)
+/// ≈ 0.02 h²δ(1 + |P''|), and steps (h ≤ 1) turn by less than their
+/// maximum angle (h|P''| < 1), so the interpolant moves by about 1e-3 tol
+/// or less.
 const REFINED: f64 = 1e-8;
 
 /// Relative correction above which the refinement is abandoned for a
@@ -42,6 +48,10 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         let mut d = self.sys.zero_state();
         // (the solver returns −J⁻¹ r)
         self.sys.solve(&w, &mut z).ok()?;
+        let refined = self
+            .cont
+            .tolerance
+            .map_or(REFINED, |tol| (1e-2 * tol).max(REFINED));
         let mut last = f64::INFINITY;
         for _ in 0..6 {
             self.residual_derivative(x, &z, &mut work).ok()?;
@@ -55,11 +65,11 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
             }
             z.axpy(1.0, &d, &free);
             last = nd;
-            if nd <= REFINED {
+            if nd <= refined {
                 break;
             }
         }
-        if last > UNREFINED {
+        if last > UNREFINED.max(refined) {
             self.sys.factor(x).ok()?;
             self.sys.solve(&w, &mut z).ok()?;
         }
