@@ -79,39 +79,47 @@ impl<P: Problem + ?Sized> System<'_, P> {
             }
         }
         let mut dk = vec![0.0; nd * n];
+        // E_j row-major (nd × n) and one row of S_j
+        let mut erow = vec![0.0; nd * n];
         let mut srow = vec![0.0; n];
         for j in 0..nn {
             if nd == 0 {
                 break;
             }
             let h = self.h(j);
-            // E_j = Σ_k D_jk into cbuf[..nd n]; F_j,l = h Σ_k D_jk a_kl.
+            // E_j = Σ_k D_jk; F_j,l = h Σ_k D_jk a_kl (row-major, nd × mn:
+            // every row a contiguous vector, so that the products below and
+            // the solve's F_j κ_j are dot products).
             let f = &mut fmat[j * nd * mn..(j + 1) * nd * mn];
             f.fill(0.0);
-            cbuf.fill(0.0);
+            erow.fill(0.0);
             for k in 0..m {
                 self.dense_coef(j, k, &mut dk);
-                for (e, d) in cbuf[..nd * n].iter_mut().zip(&dk) {
-                    *e += d;
-                }
-                for l in 0..m {
-                    let a = h * self.tab.a[k * m + l];
-                    for (fv, d) in f[l * n * nd..(l + 1) * n * nd].iter_mut().zip(&dk) {
-                        *fv += a * d;
+                for r in 0..nd {
+                    let e = &mut erow[r * n..(r + 1) * n];
+                    for (c, ev) in e.iter_mut().enumerate() {
+                        *ev += dk[c * nd + r];
+                    }
+                    let frow = &mut f[r * mn..(r + 1) * mn];
+                    for l in 0..m {
+                        let a = h * self.tab.a[k * m + l];
+                        for (c, fv) in frow[l * n..(l + 1) * n].iter_mut().enumerate() {
+                            *fv += a * dk[c * nd + r];
+                        }
                     }
                 }
             }
-            // C_j = E_j + F_j G_j, Cp_j = F_j Q_j.
+            // C_j = E_j + F_j G_j, Cp_j = F_j Q_j (into cbuf, nd × (n + nq)
+            // column-major).
             let wa = &self.wa[j * mn * wcols..(j + 1) * mn * wcols];
             for c in 0..n + nq {
                 let g = &wa[(mn + c) * mn..(mn + c + 1) * mn];
-                let out = &mut cbuf[c * nd..(c + 1) * nd];
-                for (i, gv) in g.iter().enumerate() {
-                    if *gv != 0.0 {
-                        for (o, fv) in out.iter_mut().zip(&f[i * nd..(i + 1) * nd]) {
-                            *o += fv * gv;
-                        }
+                for r in 0..nd {
+                    let mut acc = if c < n { erow[r * n + c] } else { 0.0 };
+                    for (fv, gv) in f[r * mn..(r + 1) * mn].iter().zip(g) {
+                        acc += fv * gv;
                     }
+                    cbuf[c * nd + r] = acc;
                 }
             }
             for qi in 0..nq {
@@ -130,38 +138,33 @@ impl<P: Problem + ?Sized> System<'_, P> {
             for (d, cv) in dcur.iter_mut().zip(&cbuf[..nd * n]) {
                 *d += cv;
             }
-            // Eliminate Y_j: S = Dcur U⁻¹; Dnext = −S X; Dz −= S Z'.
+            // Eliminate Y_j: S = Dcur U⁻¹; Dnext = −S X; Dz −= S Z', row by
+            // row of S.
             let panel = &self.panels[(j - 1) * rows * pcols..j * rows * pcols];
             let s = &mut smat[(j - 1) * nd * n..j * nd * n];
-            let srow = &mut srow[..];
             for r in 0..nd {
                 for c in 0..n {
                     srow[c] = dcur[c * nd + r];
                 }
-                solve_upper_left(panel, rows, n, srow);
+                solve_upper_left(panel, rows, n, &mut srow);
                 for c in 0..n {
                     s[c * nd + r] = srow[c];
                 }
-            }
-            dcur.fill(0.0);
-            for c in 0..n {
-                for i in 0..n {
-                    let x = panel[(n + c) * rows + i];
-                    if x != 0.0 {
-                        for r in 0..nd {
-                            dcur[c * nd + r] -= s[i * nd + r] * x;
-                        }
+                for c in 0..n {
+                    let x = &panel[(n + c) * rows..(n + c) * rows + n];
+                    let mut acc = 0.0;
+                    for (sv, xv) in srow.iter().zip(x) {
+                        acc -= sv * xv;
                     }
+                    dcur[c * nd + r] = acc;
                 }
-            }
-            for c in 0..nz {
-                for i in 0..n {
-                    let x = panel[(2 * n + c) * rows + i];
-                    if x != 0.0 {
-                        for r in 0..nd {
-                            dz[c * nd + r] -= s[i * nd + r] * x;
-                        }
+                for c in 0..nz {
+                    let x = &panel[(2 * n + c) * rows..(2 * n + c) * rows + n];
+                    let mut acc = dz[c * nd + r];
+                    for (sv, xv) in srow.iter().zip(x) {
+                        acc -= sv * xv;
                     }
+                    dz[c * nd + r] = acc;
                 }
             }
         }

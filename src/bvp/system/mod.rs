@@ -174,7 +174,8 @@ pub(crate) struct System<'a, P: Problem + ?Sized> {
     ppiv: Vec<usize>,
     carry: Vec<f64>,
     pdet: Det,
-    // border: the dense rows through the elimination and the final system.
+    // border: the dense rows through the elimination and the final system
+    // (F_j row-major, nd × mn per interval; S_j column-major, nd × n).
     fmat: Vec<f64>,
     smat: Vec<f64>,
     fin: Vec<f64>,

@@ -57,11 +57,12 @@ fn condense_rhs(
         rho[i] = s;
     }
     let f = &sh.fmat[j * nd * mn..(j + 1) * nd * mn];
-    kdense.fill(0.0);
-    for (i, kv) in kap.iter().enumerate() {
-        for (d, fv) in kdense.iter_mut().zip(&f[i * nd..(i + 1) * nd]) {
-            *d += fv * kv;
+    for (r, d) in kdense.iter_mut().enumerate() {
+        let mut acc = 0.0;
+        for (fv, kv) in f[r * mn..(r + 1) * mn].iter().zip(kap.iter()) {
+            acc += fv * kv;
         }
+        *d = acc;
     }
 }
 
