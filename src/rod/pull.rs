@@ -243,6 +243,11 @@ pub struct Pull {
 /// sets the first step (module docs).
 const START_LOAD: f64 = 1e-4;
 
+/// The first step of a pull whose small-load equilibrium (`START_LOAD`)
+/// cannot be solved: a step in the continuation norm that the step control
+/// doubles in a few accepted steps where it is too small.
+const FALLBACK_STEP: f64 = 1e-3;
+
 /// The default tolerance of a pull (the bar: the paper's folds to
 /// 1e-6).
 const DEFAULT_TOLERANCE: f64 = 1e-6;
@@ -524,8 +529,21 @@ impl Pull {
             ),
         };
         let sign = if stop >= from { 1.0 } else { -1.0 };
+        // The force-controlled rest with its own Δz as the extension is an
+        // equilibrium of the extension-controlled rod already; the solve
+        // re-converges it on that problem. Where that solve is singular (a
+        // straight rod: ∂Δz/∂F = 0 at Δz = 1) and its Newton fails, the
+        // rest is kept as it is.
         let rest = if rod.control() == Control::Extension {
-            solver.solve(&rod, &rest, &p0)?
+            match solver.solve(&rod, &rest, &p0) {
+                Ok(s) => s,
+                Err(
+                    Error::NewtonDiverged { .. }
+                    | Error::NewtonNotConverged { .. }
+                    | Error::SingularJacobian { .. },
+                ) => rest,
+                Err(e) => return Err(e),
+            }
         } else {
             rest
         };
@@ -553,8 +571,15 @@ impl Pull {
                     Target::Force(_) => p1[Rod::FORCE] = sign * delta * scale,
                     Target::Extension(_) => p1[Rod::EXTENSION] += sign * delta,
                 }
-                let near = solver.solve(&rod, &rest, &p1)?;
-                cont.distance(&rest, &near)?.clamp(self.ds_min, self.ds_max)
+                // (where that equilibrium cannot be solved, e.g. a straight
+                // rod compressed at its buckling load, a singular point of
+                // this solve, the first step is FALLBACK_STEP and the step
+                // control grows it)
+                match solver.solve(&rod, &rest, &p1) {
+                    Ok(near) => cont.distance(&rest, &near)?,
+                    Err(_) => FALLBACK_STEP,
+                }
+                .clamp(self.ds_min, self.ds_max)
             }
         };
         Ok(Start {

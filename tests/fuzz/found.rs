@@ -431,11 +431,15 @@ fn coarse_fixed_meshes_stay_rods_and_say_they_are_not_accurate() {
 /// pushed to Δz = −0.5 under extension control on a fixed mesh of 11
 /// intervals with m = 2 returned `Ok` with points at Δz = 1.27, 2.42, 2.29
 /// (no inextensible rod of unit length has |Δz| > 1; its estimate said
-/// 5.1), and with more steps even "reached" −0.5 along that path. Now the
-/// run ends `Failed` with `NotARod` at the first such point, the points
-/// before it kept.
+/// 5.1), and with more steps even "reached" −0.5 along that path. Then the
+/// run ended `Failed` with `NotARod` at the first such point. Now its start
+/// keeps the exact rest where re-solving it under extension control is
+/// singular (a straight rod: ∂Δz/∂F = 0; that Newton converged or not
+/// with the rounding), and the pull buckles the rod at its Euler load
+/// (a fold at Δz = 0.99995) and goes on as a rod: whatever the path, no
+/// kept point has |Δz| > 1, and a run that ends early says why in a type.
 #[test]
-fn a_pull_through_points_that_are_no_rod_fails() {
+fn a_straight_rod_pushed_on_a_coarse_mesh_stays_a_rod() {
     use hockle::continuation::Termination;
     use hockle::rod::{Pull, Rod};
     let s = Stiffness::new(100.0, 1.0, 1.885_902_876_001_885_9).unwrap();
@@ -457,10 +461,12 @@ fn a_pull_through_points_that_are_no_rod_fails() {
         assert!(
             matches!(
                 run.termination(),
-                Termination::Failed {
-                    error: Error::NotARod { .. },
-                    ..
-                }
+                Termination::MaxSteps(_)
+                    | Termination::ParameterValue(_)
+                    | Termination::Failed {
+                        error: Error::NotARod { .. },
+                        ..
+                    }
             ),
             "steps {steps}: {}",
             run.termination()

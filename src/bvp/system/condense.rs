@@ -20,6 +20,7 @@
 //! the result is the same bit for bit on any number of threads.
 
 use super::jacobian::PointDerivatives;
+use super::stage_split::{self, Split};
 use super::{LinearSolver, State, System, map_breakdown};
 use crate::bvp::problem::Problem;
 use crate::bvp::tableau::Tableau;
@@ -41,8 +42,14 @@ pub(super) struct Workspace {
     deriv: PointDerivatives,
     pinv: Vec<usize>,
     dense: DenseWorkspace,
-    /// Length m n, for solves with a block.
+    /// Length 2 m n, for solves with a block.
     pub(super) tmp: Vec<f64>,
+    /// Which rows and columns of the interval's Jacobians have a nonzero.
+    row_nz: Vec<bool>,
+    col_nz: Vec<bool>,
+    /// m n (m n + n + n_q + 1), for packing a split block with its
+    /// right-hand sides.
+    scratch: Vec<f64>,
 }
 
 impl Workspace {
@@ -51,7 +58,10 @@ impl Workspace {
             deriv: PointDerivatives::new(n, np, nint),
             pinv: vec![0; m * n],
             dense: DenseWorkspace::new(m * n, n + nq),
-            tmp: vec![0.0; m * n],
+            tmp: vec![0.0; 2 * m * n],
+            row_nz: vec![false; n],
+            col_nz: vec![false; n],
+            scratch: vec![0.0; m * n * (m * n + n + nq + 1)],
         }
     }
 }
@@ -75,6 +85,8 @@ struct Interval<'s> {
     j: usize,
     wa: &'s mut [f64],
     piv: &'s mut [usize],
+    comps: &'s mut [usize],
+    split: &'s mut [usize; 2],
     gam: &'s mut [f64],
     pim: &'s mut [f64],
     dint: &'s mut [f64],
@@ -147,12 +159,22 @@ fn condense_interval<P: Problem + ?Sized>(
     let wa = &mut *iv.wa;
     wa.fill(0.0);
     iv.dint_pk.fill(0.0);
+    ws.row_nz.fill(false);
+    ws.col_nz.fill(false);
     for k in 0..m {
         let z = sh.t[j] + tab.c[k] * h;
         let idx = (j * m + k) * n;
         let yk = &sh.ycol[idx..idx + n];
         let d = &mut ws.deriv;
         d.rhs(sh.problem, sh.free, z, yk, sh.p);
+        for c in 0..n {
+            for r in 0..n {
+                if d.jac[(r, c)] != 0.0 {
+                    ws.row_nz[r] = true;
+                    ws.col_nz[c] = true;
+                }
+            }
+        }
         for l in 0..m {
             let a = h * tab.a[k * m + l];
             for c in 0..n {
@@ -197,7 +219,24 @@ fn condense_interval<P: Problem + ?Sized>(
         iv.det = Ok(Det::ONE);
         return;
     }
-    let res = if mn <= SMALL_BLOCK {
+    let (core, constants) = stage_split::classify(&ws.row_nz, &ws.col_nz, iv.comps);
+    *iv.split = [core, constants];
+    let split = Split {
+        comps: iv.comps,
+        core,
+        constants,
+        m,
+    };
+    let res = if split.is_reduced() {
+        stage_split::pack_and_solve(
+            wa,
+            split,
+            iv.piv,
+            &mut ws.pinv,
+            &mut ws.dense,
+            &mut ws.scratch,
+        )
+    } else if mn <= SMALL_BLOCK {
         lu_panel(wa, mn, wcols, mn, iv.piv).inspect(|_| {
             let (lu, extra) = wa.split_at_mut(mn * mn);
             for col in extra.chunks_exact_mut(mn) {
@@ -338,21 +377,27 @@ impl<P: Problem + ?Sized> System<'_, P> {
         };
         let mut intervals: Vec<Interval<'_>> = pieces(&mut self.wa, mn * wcols, nn)
             .zip(pieces(&mut self.wpiv, mn, nn))
+            .zip(pieces(&mut self.comps, n, nn))
+            .zip(self.split.iter_mut())
             .zip(pieces(&mut self.gam, n * n, nn))
             .zip(pieces(&mut self.pim, n * nq, nn))
             .zip(pieces(&mut self.dint, m * nint * n, nn))
             .zip(pieces(&mut self.dint_pk, m * nint * nq, nn))
             .enumerate()
-            .map(|(j, (((((wa, piv), gam), pim), dint), dint_pk))| Interval {
-                j,
-                wa,
-                piv,
-                gam,
-                pim,
-                dint,
-                dint_pk,
-                det: Ok(Det::ONE),
-            })
+            .map(
+                |(j, (((((((wa, piv), comps), split), gam), pim), dint), dint_pk))| Interval {
+                    j,
+                    wa,
+                    piv,
+                    comps,
+                    split,
+                    gam,
+                    pim,
+                    dint,
+                    dint_pk,
+                    det: Ok(Det::ONE),
+                },
+            )
             .collect();
         for_each_interval(&mut intervals, &mut self.work, groups, |iv, ws| {
             condense_interval(&shared, iv, ws);

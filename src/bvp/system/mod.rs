@@ -19,13 +19,15 @@
 //! | `residual` | the residual of every equation |
 //! | `jacobian` | derivatives of f, g, h at one point (the problem's or central differences) |
 //! | `condense` | the Jacobian and, per interval, dK_j = κ_j + G_j dY_j + Q_j dq and Γ_j, Π_j (in parallel with `rayon`) |
+//! | `stage_split` | the interval block's constants and quadratures, and the solve that factors only its core |
 //! | `eliminate` | the elimination of the interior mesh values Y_1..Y_{N−1} |
 //! | `border` | the dense (integral and border) rows and the final (2n + n_q) system in (Y_0, Y_N, q) |
 //! | `solve` | a Newton correction with the condensed factorisation |
 //! | `sparse` | the full uncondensed system through faer's sparse LU (reference and fallback) |
 //!
 //! Condensation: each interval's stage equations are solved for
-//! dK_j = κ_j + G_j dY_j + Q_j dq with a dense LU of the mn × mn block,
+//! dK_j = κ_j + G_j dY_j + Q_j dq with a dense LU of the mn × mn block
+//! (of its core only, where components are constant or quadratures),
 //! leaving −Γ_j dY_j + dY_{j+1} − Π_j dq = ρ_j. The interior mesh unknowns are
 //! then eliminated one by one with partial pivoting over the 2n rows that
 //! hold them (AUTO's structure), leaving a dense (2n + n_q) system in
@@ -38,6 +40,7 @@ mod jacobian;
 mod residual;
 mod solve;
 mod sparse;
+mod stage_split;
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
@@ -157,6 +160,11 @@ pub(crate) struct System<'a, P: Problem + ?Sized> {
     // contributions to the integral rows' parameter columns.
     wa: Vec<f64>,
     wpiv: Vec<usize>,
+    // per interval its components ordered core, constants, quadratures and
+    // the first two counts (`stage_split`; the block in `wa` is packed
+    // when the core is not every component)
+    comps: Vec<usize>,
+    split: Vec<[usize; 2]>,
     gam: Vec<f64>,
     pim: Vec<f64>,
     dint: Vec<f64>,
@@ -319,6 +327,8 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
             hbuf: vec![0.0; nint],
             wa: vec![0.0; nn * mn * wcols],
             wpiv: vec![0; nn * mn],
+            comps: (0..nn).flat_map(|_| 0..n).collect(),
+            split: vec![[n, 0]; nn],
             gam: vec![0.0; nn * n * n],
             pim: vec![0.0; nn * n * nq],
             dint: vec![0.0; nn * m * nint * n],

@@ -5,6 +5,7 @@
 //! substitution.
 
 use super::condense::{SMALL_BLOCK, for_each_interval, groups, pieces};
+use super::stage_split::{self, Split};
 use super::{LinearSolver, Residual, State, System};
 use crate::bvp::problem::Problem;
 use crate::bvp::tableau::Tableau;
@@ -17,6 +18,8 @@ struct Stage<'s> {
     tab: &'s Tableau,
     wa: &'s [f64],
     wpiv: &'s [usize],
+    comps: &'s [usize],
+    split: &'s [[usize; 2]],
     fmat: &'s [f64],
     stage: &'s [f64],
     cont: &'s [f64],
@@ -43,7 +46,16 @@ fn condense_rhs(
     }
     let wa = &sh.wa[j * mn * sh.wcols..(j + 1) * mn * sh.wcols];
     let piv = &sh.wpiv[j * mn..(j + 1) * mn];
-    if mn <= SMALL_BLOCK {
+    let [core, constants] = sh.split[j];
+    let split = Split {
+        comps: &sh.comps[j * n..(j + 1) * n],
+        core,
+        constants,
+        m,
+    };
+    if split.is_reduced() {
+        stage_split::solve(wa, piv, split, kap, tmp);
+    } else if mn <= SMALL_BLOCK {
         apply_lower(wa, mn, mn, piv, kap);
         solve_upper(wa, mn, mn, kap);
     } else {
@@ -89,6 +101,8 @@ impl<P: Problem + ?Sized> System<'_, P> {
             tab: &self.tab,
             wa: &self.wa,
             wpiv: &self.wpiv,
+            comps: &self.comps,
+            split: &self.split,
             fmat: &self.fmat,
             stage: &r.stage,
             cont: &r.cont,
