@@ -39,16 +39,23 @@
 //! (default `target/hockle`); see `examples/models/trade.rs`. With
 //! `--on-demand`, the cost of shapes, stability and contact on top of a
 //! curve; with `--ends THETA0_DEG,A_OVER_B,NU`, the rod's excess extension
-//! over the helix times n for n = 1 … 8 (same file).
+//! over the helix times n for n = 1 … 8 (same file). With `--shapes`, what
+//! the shape at one load costs (`examples/models/shapes.rs`); with
+//! `--helix-data [--random N] [--seed S]`, the helix's true error on the
+//! grid and on fresh random scenes, as CSV (`examples/models/helix_bound.rs`).
 
 use std::time::{Duration, Instant};
 
 #[path = "../tests/common/mod.rs"]
 mod common;
+#[path = "models/helix_bound.rs"]
+mod helix_bound;
 #[path = "../tests/spring/measure.rs"]
 mod measure;
 #[path = "models/plot.rs"]
 mod plot;
+#[path = "models/shapes.rs"]
+mod shapes;
 #[path = "models/trade.rs"]
 mod trade;
 
@@ -76,6 +83,8 @@ fn main() {
         }
         Some("--trade") => trade::run(&args[1..]),
         Some("--on-demand") => trade::on_demand(),
+        Some("--helix-data") => helix_bound::run(&args[1..]),
+        Some("--shapes") => shapes::run(),
         Some("--ends") => args
             .get(1)
             .ok_or_else(|| "--ends needs THETA0_DEG,A_OVER_B,NU".to_owned())

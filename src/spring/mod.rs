@@ -38,6 +38,7 @@ mod question;
 mod response;
 mod rod_model;
 mod scene;
+mod shape;
 mod sweep;
 
 pub use crate::load::{Control, Target};
@@ -48,6 +49,7 @@ pub use question::Question;
 pub use response::{BranchMatch, Direction, Jump, PopOut, Response, Stretch};
 pub use rod_model::RodModel;
 pub use scene::Spring;
+pub use shape::Shape;
 pub use sweep::{sweep, sweep_serial};
 
 use crate::error::{Error, Result};
