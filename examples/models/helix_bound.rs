@@ -16,8 +16,11 @@ use hockle::spring::{HelixModel, Model, RodModel, Spring};
 
 use crate::measure::{both_ways, drawn, grid_scenes};
 
+/// A scene: n, θ0 in degrees, A/B, ν.
+type Scene = (u32, f64, f64, f64);
+
 /// Fresh scenes from an xorshift generator.
-fn random_scenes(mut seed: u64, count: usize) -> Vec<(u32, f64, f64, f64)> {
+fn random_scenes(mut seed: u64, count: usize) -> Vec<Scene> {
     let mut rnd = move || {
         seed ^= seed << 13;
         seed ^= seed >> 7;
@@ -47,7 +50,7 @@ pub fn run(args: &[String]) -> Result<(), String> {
             other => return Err(format!("unknown flag {other} (--random N, --seed S)")),
         }
     }
-    let scenes: Vec<(&str, (u32, f64, f64, f64))> = grid_scenes()
+    let scenes: Vec<(&str, Scene)> = grid_scenes()
         .into_iter()
         .map(|s| ("grid", s))
         .chain(

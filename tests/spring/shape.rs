@@ -220,3 +220,52 @@ fn random_shapes_are_within_their_estimates() {
     }
     println!("largest true/estimated: {worst:.3}");
 }
+
+/// The grid (`measure::grid_scenes`), each spring's shape at
+/// F/((2πn)²B) = 1 at tolerances 1e-2, 1e-4, 1e-6 (run with the curve
+/// grid of `choice.rs` by the same command).
+#[test]
+#[ignore = "slow: about 3 minutes; run with --ignored --nocapture grid"]
+fn grid_shapes() {
+    let at = Target::Force(1.0);
+    let tolerances = [1e-2, 1e-4, 1e-6];
+    let mut seconds = vec![Vec::new(); tolerances.len()];
+    let (mut worst, mut failures) = (0.0_f64, Vec::new());
+    for (n, theta0, a_over_b, nu) in crate::measure::grid_scenes() {
+        let s = spring(n, theta0, a_over_b, nu);
+        let exact = reference(&s, at, SHAPE_REFERENCE_INTERVALS_PER_COIL);
+        let r = centreline(&exact);
+        for (t, tol) in tolerances.iter().enumerate() {
+            let answer = s.answer(&Question::Shape { at }, *tol).unwrap();
+            let shape = shape_of(&answer);
+            let truth = distance_up_to_a_turn(&centreline(shape.equilibrium()), &r);
+            let estimated = answer.estimated_error();
+            seconds[t].push(answer.elapsed().as_secs_f64());
+            worst = worst.max(truth / estimated);
+            println!(
+                "| {n} | {theta0} | {a_over_b} | {nu} | {tol:.0e} | {estimated:.2e} | {truth:.2e} | {:?} ({:?}) | {:.3} |",
+                shape.loops(),
+                exact.loops(),
+                answer.elapsed().as_secs_f64()
+            );
+            if !(answer.meets_tolerance() && truth <= estimated && shape.loops() == exact.loops()) {
+                failures.push(format!(
+                    "({n}, {theta0}°, {a_over_b}, {nu}) at {tol:e}: {answer}, true {truth:e}, loops {:?} vs {:?}",
+                    shape.loops(),
+                    exact.loops()
+                ));
+            }
+        }
+    }
+    for (t, tol) in tolerances.iter().enumerate() {
+        let mut v = seconds[t].clone();
+        v.sort_by(f64::total_cmp);
+        println!(
+            "tolerance {tol:e}: median / max seconds {:.3} / {:.3}",
+            v[v.len() / 2],
+            v[v.len() - 1]
+        );
+    }
+    println!("largest true/estimated: {worst:.3}");
+    assert!(failures.is_empty(), "{failures:#?}");
+}
