@@ -142,8 +142,9 @@ pub enum Reason {
     /// The linear response at rest is a closed form, exact up to rounding.
     ClosedForm,
     /// Neither cheap model can be certified at the tolerance: the rod
-    /// answered, at half the tolerance asked (its estimate is reported
-    /// doubled), the cheapest rod that meets it.
+    /// answered, the cheapest rod that meets it: for a curve, run at half
+    /// the tolerance asked (its estimate is reported doubled); for a shape,
+    /// run at the tolerance and its last point refined ([`Shape`]).
     RodNeeded {
         /// Why not the exact helix.
         helix: SetAside,

@@ -62,7 +62,8 @@ impl Spring {
     ///
     /// The tolerance is in the plane (Δz, F/((2πn)²B)) of the paper's
     /// plots (max norm), as for [`RodModel::tolerance`]; for the spring
-    /// constant it is relative.
+    /// constant it is relative; for a shape it is the largest distance
+    /// between centrelines, in units of the rod's length ([`Shape`](super::Shape)).
     ///
     /// ```no_run
     /// use hockle::spring::{Choice, Question, Spring};

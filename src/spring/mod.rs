@@ -19,6 +19,11 @@
 //! control; [`RodModel::pull_with_contact`] adds the closest approach of
 //! every shape to itself.
 //!
+//! Or the spring chooses: [`Spring::answer`] answers a [`Question`] (a
+//! curve, forces or extensions, the spring constant, the pop-outs, the
+//! [`Shape`] at one load and its loop count) at a tolerance with the
+//! cheapest model that can be shown to meet it, and says why ([`Answer`]).
+//!
 //! ```
 //! use hockle::spring::{HelixModel, Model, Spring};
 //! let spring = Spring::paper();

@@ -40,6 +40,19 @@ use super::{HelixModel, Model, RodModel, Spring};
 /// The rod's equilibria are defined up to a rigid turn about the force line
 /// (the z axis, through both ends): the answer's error is the largest
 /// distance between its centreline and the exact one turned to fit best.
+///
+/// ```
+/// use hockle::Stiffness;
+/// use hockle::spring::{Question, Spring, Target, Value};
+/// let spring = Spring::from_degrees(2, 60.0, Stiffness::nikolai(0.1, 0.0)?)?;
+/// let answer = spring.answer(&Question::Shape { at: Target::Force(0.5) }, 1e-4)?;
+/// assert!(answer.meets_tolerance());
+/// let Value::Shape(shape) = answer.value() else { unreachable!() };
+/// assert!((shape.force_scaled() - 0.5).abs() < 1e-9);
+/// assert!(shape.centreline(0.0)?.norm() < 1e-12); // r(0) = 0, on the force line
+/// println!("{} loops; {}", shape.loops().unwrap_or(0), answer.why());
+/// # Ok::<(), hockle::Error>(())
+/// ```
 #[derive(Debug, Clone)]
 pub struct Shape {
     equilibrium: Equilibrium,

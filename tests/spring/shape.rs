@@ -41,11 +41,12 @@ fn the_reference_is_converged() {
 
 #[test]
 fn shapes_are_within_their_estimates() {
-    // a steep slinky pulled hard, a mid-pitch spring under extension
-    // control, and the paper's spring past its two pop-outs below 1
-    // (0.60, 0.85: two loops left)
+    // a steep slinky pulled hard, a spring pushed, a mid-pitch spring under
+    // extension control, and the paper's spring past its two pop-outs below
+    // 1 (0.60, 0.85: two loops left)
     for (s, at, loops) in [
         (spring(2, 60.0, 0.1, 0.0), Target::Force(1.0), None),
+        (spring(4, 70.0, 3.0, 0.2), Target::Force(-0.05), Some(4)),
         (spring(3, 80.0, 2.0, 0.3), Target::Extension(0.6), None),
         (Spring::paper(), Target::Force(1.0), Some(2)),
     ] {
