@@ -53,7 +53,10 @@ pub enum Question {
     /// equilibrium at which the pull from rest first reaches `at` (a force
     /// F/((2πn)²B) under force control, a dead load; an extension Δz under
     /// extension control, a hard device). Under force control that is the
-    /// state of a slow loading test after every pop-out below the load.
+    /// state of a slow loading test after every pop-out below the load. A
+    /// pull that stops before the load answers with the shape of its last
+    /// point ([`Answer::reached_target`](super::Answer::reached_target) is
+    /// then false).
     Shape {
         /// The load (or extension) of the shape.
         at: Target,
