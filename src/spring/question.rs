@@ -56,7 +56,9 @@ pub enum Question {
     /// state of a slow loading test after every pop-out below the load. A
     /// pull that stops before the load answers with the shape of its last
     /// point ([`Answer::reached_target`](super::Answer::reached_target) is
-    /// then false).
+    /// then false). A load within about the tolerance of a pop-out is
+    /// ill-conditioned: which side of the jump the shape lies on depends on
+    /// where the pull locates the fold.
     Shape {
         /// The load (or extension) of the shape.
         at: Target,
