@@ -47,7 +47,7 @@ const ROD_ESTIMATE_SAFETY: f64 = 2.0;
 const RETRY_DIVISOR: f64 = 10.0;
 
 /// The rod's smallest tolerance ([`crate::rod::Pull::tolerance`]).
-const MIN_ROD_TOLERANCE: f64 = 1e-12;
+pub(super) const MIN_ROD_TOLERANCE: f64 = 1e-12;
 
 /// The elastica's lower bound is taken this much below the distance
 /// measured to its sampled curve (the chords of 400 samples over

@@ -31,6 +31,7 @@ use crate::load::Target;
 use crate::rod::{Equilibrium, Rod};
 
 use super::answer::{Answer, Choice, Reason, SetAside, Value};
+use super::choice::MIN_ROD_TOLERANCE;
 use super::{HelixModel, Model, RodModel, Spring};
 
 /// The shape of a spring at one load: the rod's equilibrium there (its
@@ -117,9 +118,6 @@ const MAX_HALVINGS: u32 = 6;
 /// two solutions are compared (the collocation polynomials have degree
 /// m ≤ 7 per interval, so their difference has at most 7 extrema there).
 const SAMPLES_PER_INTERVAL: usize = 16;
-
-/// The rod's smallest tolerance ([`crate::rod::Pull::tolerance`]).
-const MIN_ROD_TOLERANCE: f64 = 1e-12;
 
 impl Spring {
     /// [`Question::Shape`](super::Question::Shape) (module docs).
