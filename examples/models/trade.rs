@@ -70,7 +70,7 @@ fn on_cpu() -> f64 {
 /// advances in scheduler ticks (4 ms at 250 Hz), so `f` is called until
 /// the calls have taken at least [`WINDOW`] seconds (two calls at least),
 /// which keeps the tick's share of the total below 4 %.
-fn time_per_call<T>(mut f: impl FnMut() -> T) -> (T, f64) {
+pub fn time_per_call<T>(mut f: impl FnMut() -> T) -> (T, f64) {
     let start = on_cpu();
     let mut calls = 0u32;
     loop {
@@ -228,7 +228,7 @@ fn print_named(rows: &[Row]) {
 }
 
 /// Seconds in a short human unit.
-fn seconds(t: f64) -> String {
+pub fn seconds(t: f64) -> String {
     if t < 1e-3 {
         format!("{:.0} µs", t * 1e6)
     } else if t < 1.0 {

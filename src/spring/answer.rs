@@ -4,7 +4,7 @@
 
 use std::time::Duration;
 
-use super::{Jump, PopOut, Response};
+use super::{Jump, PopOut, Response, Shape};
 
 /// The value of an [`Answer`], one variant per
 /// [`Question`](super::Question).
@@ -31,6 +31,8 @@ pub enum Value {
         /// [`Response::jumps`] under force control.
         jumps: Vec<Jump>,
     },
+    /// The equilibrium at the load and its loop count ([`Shape`]).
+    Shape(Box<Shape>),
 }
 
 /// The model that answered.
@@ -98,6 +100,14 @@ pub enum SetAside {
     NoBound,
     /// The question is not one this model answers (e.g. a push).
     NotAnswered,
+    /// The spring's ends lie on the force line, the helix's (about that
+    /// line) at its radius R = sin θ/(2πn) at the load: its shape is at
+    /// least R off at the ends, whatever its turn about the line.
+    MissesTheEnds {
+        /// A lower bound on the helix's shape error (units of the rod's
+        /// length).
+        lower_bound: f64,
+    },
 }
 
 impl core::fmt::Display for SetAside {
@@ -117,6 +127,10 @@ impl core::fmt::Display for SetAside {
             ),
             SetAside::NoBound => f.write_str("no error bound without the rod"),
             SetAside::NotAnswered => f.write_str("does not answer this question"),
+            SetAside::MissesTheEnds { lower_bound } => write!(
+                f,
+                "its ends lie {lower_bound:.1e} off the force line, the spring's on it"
+            ),
         }
     }
 }
@@ -128,8 +142,9 @@ pub enum Reason {
     /// The linear response at rest is a closed form, exact up to rounding.
     ClosedForm,
     /// Neither cheap model can be certified at the tolerance: the rod
-    /// answered, at half the tolerance asked (its estimate is reported
-    /// doubled), the cheapest rod that meets it.
+    /// answered, the cheapest rod that meets it: for a curve, run at half
+    /// the tolerance asked (its estimate is reported doubled); for a shape,
+    /// run at the tolerance and its last point refined ([`Shape`]).
     RodNeeded {
         /// Why not the exact helix.
         helix: SetAside,
@@ -148,7 +163,9 @@ pub enum Reason {
 /// distance (max norm in (Δz, F/((2πn)²B))) between what it returns (its
 /// points, folds and interpolant, and the values read off it) and the exact
 /// curve ([`crate::rod::PullRun::estimate`]); for the spring constant, a
-/// relative error.
+/// relative error; for a shape, the largest distance between its
+/// centreline and the exact one (units of the rod's length, up to a turn
+/// about the force line: [`Shape`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Answer {
     pub(super) value: Value,

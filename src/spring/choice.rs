@@ -9,6 +9,8 @@
 //! | spring constant | linear response (closed form, [`Spring::spring_constant`]) | helical intrinsic strains |
 //! | anything else | exact helix | never certified: loaded on its axis, it leaves the rest state with another slope (k_rod/k_helix from 0.41 for a slinky to 0.65 for n = 6, θ0 = 89.9°, A/B = 20) |
 //! | anything else | flat elastica | never certified: it passes ≥ 0.4 cos θ0 from the rest state, ignores pitch, A, C and pop-outs, and no bound on its error is known without the rod |
+//! | shape at one load | exact helix | never: about the force line its ends are its radius R off the spring's ([`SetAside::MissesTheEnds`](super::SetAside::MissesTheEnds)), and no bound on its interior is known |
+//! | shape at one load | rod at the tolerance, its last point solved again on halved meshes until the centrelines agree to the tolerance | always ([`Shape`](super::Shape)) |
 //! | anything else | rod at half the tolerance asked | always: twice its own estimate ([`crate::rod::PullRun::estimate`]) |
 //!
 //! The rod pulls only as far as the question needs: to the largest load or
@@ -45,7 +47,7 @@ const ROD_ESTIMATE_SAFETY: f64 = 2.0;
 const RETRY_DIVISOR: f64 = 10.0;
 
 /// The rod's smallest tolerance ([`crate::rod::Pull::tolerance`]).
-const MIN_ROD_TOLERANCE: f64 = 1e-12;
+pub(super) const MIN_ROD_TOLERANCE: f64 = 1e-12;
 
 /// The elastica's lower bound is taken this much below the distance
 /// measured to its sampled curve (the chords of 400 samples over
@@ -60,7 +62,8 @@ impl Spring {
     ///
     /// The tolerance is in the plane (Δz, F/((2πn)²B)) of the paper's
     /// plots (max norm), as for [`RodModel::tolerance`]; for the spring
-    /// constant it is relative.
+    /// constant it is relative; for a shape it is the largest distance
+    /// between centrelines, in units of the rod's length ([`Shape`](super::Shape)).
     ///
     /// ```no_run
     /// use hockle::spring::{Choice, Question, Spring};
@@ -103,6 +106,9 @@ impl Spring {
                 elapsed: clock.elapsed(),
             });
         };
+        if let Question::Shape { .. } = question {
+            return self.answer_shape(target, tolerance, clock);
+        }
         let helix = self.helix_set_aside(target)?;
         let elastica = self.elastica_set_aside(target, tolerance)?;
 

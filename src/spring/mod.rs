@@ -19,6 +19,11 @@
 //! control; [`RodModel::pull_with_contact`] adds the closest approach of
 //! every shape to itself.
 //!
+//! Or the spring chooses: [`Spring::answer`] answers a [`Question`] (a
+//! curve, forces or extensions, the spring constant, the pop-outs, the
+//! [`Shape`] at one load and its loop count) at a tolerance with the
+//! cheapest model that can be shown to meet it, and says why ([`Answer`]).
+//!
 //! ```
 //! use hockle::spring::{HelixModel, Model, Spring};
 //! let spring = Spring::paper();
@@ -38,6 +43,7 @@ mod question;
 mod response;
 mod rod_model;
 mod scene;
+mod shape;
 mod sweep;
 
 pub use crate::load::{Control, Target};
@@ -48,6 +54,7 @@ pub use question::Question;
 pub use response::{BranchMatch, Direction, Jump, PopOut, Response, Stretch};
 pub use rod_model::RodModel;
 pub use scene::Spring;
+pub use shape::Shape;
 pub use sweep::{sweep, sweep_serial};
 
 use crate::error::{Error, Result};

@@ -2,7 +2,7 @@
 //! tolerance ([`Spring::answer`](super::Spring::answer)).
 
 use crate::error::{Error, Result};
-use crate::load::Target;
+use crate::load::{Control, Target};
 
 /// What a user wants to know about a spring. Forces are F/((2πn)²B) (the
 /// paper's scale), extensions Δz, as everywhere in [`crate::spring`].
@@ -49,6 +49,20 @@ pub enum Question {
         /// The largest load of the test.
         max_force: f64,
     },
+    /// The shape of the spring at one load, and its loop count there: the
+    /// equilibrium at which the pull from rest first reaches `at` (a force
+    /// F/((2πn)²B) under force control, a dead load; an extension Δz under
+    /// extension control, a hard device). Under force control that is the
+    /// state of a slow loading test after every pop-out below the load. A
+    /// pull that stops before the load answers with the shape of its last
+    /// point ([`Answer::reached_target`](super::Answer::reached_target) is
+    /// then false). A load within about the tolerance of a pop-out is
+    /// ill-conditioned: which side of the jump the shape lies on depends on
+    /// where the pull locates the fold.
+    Shape {
+        /// The load (or extension) of the shape.
+        at: Target,
+    },
 }
 
 impl Question {
@@ -82,6 +96,7 @@ impl Question {
             Question::ForcesAt(extensions) => {
                 Target::Extension(farthest(extensions, rest_extension))
             }
+            Question::Shape { at } => *at,
             Question::SpringConstant => return Ok(None),
         };
         Ok(Some(target.validate(rest_extension)?))
@@ -127,6 +142,18 @@ impl Question {
                     });
                 }
             }
+            Question::Shape { at } => {
+                if !(at.value().is_finite()
+                    && (at.control() == Control::Extension || at.value() != 0.0))
+                {
+                    return Err(Error::InvalidArgument {
+                        name: "shape load",
+                        value: at.value(),
+                        allowed: "a finite, non-zero force F/((2πn)²B), or a finite extension \
+                                  in (−1, 1) other than the rest extension",
+                    });
+                }
+            }
             Question::SpringConstant => {}
         }
         Ok(())
@@ -141,6 +168,7 @@ impl Question {
             Question::ExtensionsAt(_) => "extensions at forces",
             Question::SpringConstant => "spring constant",
             Question::PopOuts { .. } => "pop-outs",
+            Question::Shape { .. } => "shape",
         }
     }
 }
@@ -172,6 +200,10 @@ impl core::fmt::Display for Question {
             Question::PopOuts { max_force } => {
                 write!(f, "the pop-outs up to F/((2πn)²B) = {max_force}")
             }
+            Question::Shape { at } => match at {
+                Target::Force(v) => write!(f, "the shape at F/((2πn)²B) = {v}"),
+                Target::Extension(v) => write!(f, "the shape at Δz = {v}"),
+            },
         }
     }
 }

@@ -10,6 +10,7 @@ mod contact;
 mod measure;
 mod models;
 mod scene;
+mod shape;
 mod stability;
 mod sweep;
 mod tangent;

@@ -12,8 +12,13 @@
 //! max-norm in (Δz, F/((2πn)²B)).
 #![allow(dead_code)]
 
+use std::ops::ControlFlow;
+
+use hockle::bvp::{Collocation, Mesh, Solution};
+use hockle::continuation::Point;
 use hockle::curve::ForceExtension;
-use hockle::spring::Response;
+use hockle::rod::Equilibrium;
+use hockle::spring::{Response, RodModel, Spring, Target};
 use hockle::{Control, FoldKind};
 
 /// One piece of a curve: a Hermite segment of the curve, or a line.
@@ -172,4 +177,95 @@ pub fn grid_scenes() -> Vec<(u32, f64, f64, f64)> {
         }
     }
     scenes
+}
+
+// Shapes (tests/spring/shape.rs, examples/models --shapes): a converged
+// equilibrium at one load and the distance between two centrelines.
+
+/// Intervals per coil of the reference's final solve (m = 7): the
+/// collocation error between mesh points is O((2πn h)^8 / 8!) with
+/// 2πn h = 2π/40 ≈ 0.16, far below 1e-9; `the_reference_is_converged`
+/// measures it against twice as many.
+pub const SHAPE_REFERENCE_INTERVALS_PER_COIL: usize = 40;
+
+/// The largest distance between the reference and the same solve on a mesh
+/// twice as fine that the reference may have: 100 times below the smallest
+/// tolerance tested (1e-6), so its own error cannot hide an answer's.
+pub const SHAPE_REFERENCE_CONVERGED: f64 = 1e-8;
+
+/// Centreline samples along s for a distance.
+pub const SAMPLES: usize = 2000;
+
+/// The last point of a pull of `spring` to `at` (fixed mesh, module docs),
+/// solved again on `per_coil` intervals per coil.
+pub fn shape_reference(spring: &Spring, at: Target, per_coil: usize) -> Equilibrium {
+    let driver = RodModel::default()
+        .tolerance(1e-8)
+        .intervals(10 * spring.coils() as usize)
+        .points(7)
+        .driver(spring, at)
+        .unwrap();
+    let rod = *driver.rod();
+    let mut last: Option<Solution> = None;
+    let run = driver
+        .run(|p: &Point| {
+            last = Some(p.solution().clone());
+            ControlFlow::<()>::Continue(())
+        })
+        .unwrap();
+    assert!(
+        run.reached_target(),
+        "reference of {spring}: {:?}",
+        run.termination()
+    );
+    let last = last.unwrap();
+    let fine = Collocation::new()
+        .points(7)
+        .mesh(Mesh::uniform(per_coil * spring.coils() as usize).unwrap())
+        .newton_tolerance(1e-13)
+        .solve(&rod, &last, last.parameters())
+        .unwrap();
+    Equilibrium::new(rod, fine).unwrap()
+}
+
+pub fn centreline(eq: &Equilibrium) -> Vec<[f64; 3]> {
+    (0..=SAMPLES)
+        .map(|i| {
+            let r = eq.centreline(i as f64 / SAMPLES as f64).unwrap();
+            [r.x, r.y, r.z]
+        })
+        .collect()
+}
+
+/// max_s |R_z(α) a(s) − b(s)| for the turn α about the force line (z)
+/// that makes it least: a scan of 720 turns, then golden sections on the
+/// two neighbouring intervals of the best.
+pub fn distance_up_to_a_turn(a: &[[f64; 3]], b: &[[f64; 3]]) -> f64 {
+    let at = |alpha: f64| {
+        let (s, c) = alpha.sin_cos();
+        a.iter()
+            .zip(b)
+            .map(|(p, q)| {
+                let x = c * p[0] - s * p[1] - q[0];
+                let y = s * p[0] + c * p[1] - q[1];
+                (x * x + y * y + (p[2] - q[2]).powi(2)).sqrt()
+            })
+            .fold(0.0, f64::max)
+    };
+    let step = 2.0 * std::f64::consts::PI / 720.0;
+    let best = (0..720)
+        .map(|i| -std::f64::consts::PI + i as f64 * step)
+        .min_by(|x, y| at(*x).total_cmp(&at(*y)))
+        .unwrap();
+    let (mut lo, mut hi) = (best - step, best + step);
+    for _ in 0..80 {
+        let g = 0.618_033_988_749_895;
+        let (x, y) = (hi - g * (hi - lo), lo + g * (hi - lo));
+        if at(x) < at(y) {
+            hi = y;
+        } else {
+            lo = x;
+        }
+    }
+    at(0.5 * (lo + hi)).min(at(best))
 }
