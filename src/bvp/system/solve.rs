@@ -190,13 +190,17 @@ impl<P: Problem + ?Sized> System<'_, P> {
         }
         // 5. Stage derivatives dK_j = κ_j + G_j dY_j + Q_j dq.
         let (wa, kap, y) = (&self.wa, &self.kap, &out.y);
+        let (comps, split) = (&self.comps, &self.split);
         let mut intervals: Vec<_> = pieces(&mut out.k, mn, nn).enumerate().collect();
         for_each_interval(&mut intervals, &mut self.work, groups, |it, _| {
             let (j, dk) = it;
             let j = *j;
             let wa = &wa[j * mn * wcols..(j + 1) * mn * wcols];
             dk.copy_from_slice(&kap[j * mn..(j + 1) * mn]);
-            for c in 0..n {
+            // (a quadrature's column of G_j is zero: `stage_split`)
+            let [core, constants] = split[j];
+            let active = &comps[j * n..j * n + core + constants];
+            for &c in active {
                 let yv = y[j * n + c];
                 for (d, g) in dk.iter_mut().zip(&wa[(mn + c) * mn..(mn + c + 1) * mn]) {
                     *d += g * yv;
