@@ -20,13 +20,8 @@ use crate::measure::{both_ways, drawn, grid_scenes};
 type Scene = (u32, f64, f64, f64);
 
 /// Fresh scenes from an xorshift generator.
-fn random_scenes(mut seed: u64, count: usize) -> Vec<Scene> {
-    let mut rnd = move || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed % 1_000_000) as f64 / 1e6
-    };
+fn random_scenes(seed: u64, count: usize) -> Vec<Scene> {
+    let mut rnd = crate::common::uniform(seed);
     (0..count)
         .map(|_| {
             let n = 2 + (rnd() * 7.0) as u32;

@@ -126,3 +126,15 @@ pub fn curve_distance(curve: &hockle::ForceExtension, reference: &hockle::ForceE
     }
     worst
 }
+
+/// Uniform numbers in [0, 1) on a grid of 1e-6 from Marsaglia's xorshift
+/// (13, 7, 17): the fresh random scenes of the tests and examples, from a
+/// seed chosen once and written beside each use.
+pub fn uniform(mut seed: u64) -> impl FnMut() -> f64 {
+    move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % 1_000_000) as f64 / 1e6
+    }
+}

@@ -165,13 +165,8 @@ fn bad_shape_questions_are_typed_errors() {
 /// a random load (F/((2πn)²B) in 0.05–1.5, or an extension a fraction
 /// 0.1–0.9 of the way from rest to 1), from a seed chosen once, not tuned:
 /// (spring, target).
-fn random_scenes(mut seed: u64, count: usize) -> Vec<(Spring, Target)> {
-    let mut rnd = move || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed % 1_000_000) as f64 / 1e6
-    };
+fn random_scenes(seed: u64, count: usize) -> Vec<(Spring, Target)> {
+    let mut rnd = crate::common::uniform(seed);
     (0..count)
         .map(|i| {
             let n = 2 + (rnd() * 7.0) as u32;

@@ -24,13 +24,8 @@ fn reference(spring: &Spring, target: hockle::Target) -> hockle::spring::Respons
 
 /// Scenes n ∈ [2, 12], θ0 ∈ [10°, 89.95°], A/B ∈ [0.05, 100] (log-uniform),
 /// ν ∈ [0, 0.49] (C by the Nikolai equality).
-fn random_scenes(mut seed: u64, count: usize) -> Vec<Spring> {
-    let mut rnd = move || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed % 1_000_000) as f64 / 1e6
-    };
+fn random_scenes(seed: u64, count: usize) -> Vec<Spring> {
+    let mut rnd = crate::common::uniform(seed);
     (0..count)
         .map(|_| {
             let n = 2 + (rnd() * 11.0) as u32;

@@ -27,6 +27,51 @@ impl Problem for Bratu {
     }
 }
 
+/// The residual's equations in one vector: stage, continuity, boundary,
+/// dense rows.
+fn flat(r: &Residual) -> Vec<f64> {
+    r.stage
+        .iter()
+        .chain(&r.cont)
+        .chain(&r.bc)
+        .chain(&r.dense)
+        .copied()
+        .collect()
+}
+
+/// The Jacobian of the residual at `x` in (Y, K, the first `free`
+/// parameters) by central differences of step 1e-6 (entries to ~1e-10 for
+/// smooth problems of unit scale), column-major, with its size.
+fn difference_jacobian<P: Problem + ?Sized>(
+    sys: &mut System<'_, P>,
+    x: &State,
+    free: usize,
+) -> (Vec<f64>, usize) {
+    let (ny, nk) = (x.y.len(), x.k.len());
+    let size = ny + nk + free;
+    let mut jm = vec![0.0; size * size];
+    let d = 1e-6;
+    for c in 0..size {
+        let (mut xp, mut xm) = (x.clone(), x.clone());
+        let (p, q) = if c < ny {
+            (&mut xp.y[c], &mut xm.y[c])
+        } else if c < ny + nk {
+            (&mut xp.k[c - ny], &mut xm.k[c - ny])
+        } else {
+            (&mut xp.p[c - ny - nk], &mut xm.p[c - ny - nk])
+        };
+        *p += d;
+        *q -= d;
+        let (mut rp, mut rm) = (sys.zero_residual(), sys.zero_residual());
+        sys.residual(&xp, &mut rp).unwrap();
+        sys.residual(&xm, &mut rm).unwrap();
+        for (i, (u, v)) in flat(&rp).iter().zip(flat(&rm)).enumerate() {
+            jm[c * size + i] = (u - v) / (2.0 * d);
+        }
+    }
+    (jm, size)
+}
+
 /// The condensed solve and faer's sparse LU on the full system give the
 /// same Newton correction at an arbitrary (non-solution) state, with a
 /// free parameter, an integral row and a border row.
@@ -71,42 +116,7 @@ fn condensed_matches_sparse() {
         let mut b = sys.zero_state();
         sys.solve(&r, &mut b).unwrap();
         // Third reference: dense FD Jacobian of the residual.
-        let flat = |r: &Residual| -> Vec<f64> {
-            r.stage
-                .iter()
-                .chain(&r.cont)
-                .chain(&r.bc)
-                .chain(&r.dense)
-                .copied()
-                .collect()
-        };
-        let ny = x.y.len();
-        let nk = x.k.len();
-        let size = ny + nk + if full { 2 } else { 0 };
-        let mut jm = vec![0.0; size * size];
-        for c in 0..size {
-            let mut xp = x.clone();
-            let mut xm = x.clone();
-            let d = 1e-6;
-            if c < ny {
-                xp.y[c] += d;
-                xm.y[c] -= d;
-            } else if c < ny + nk {
-                xp.k[c - ny] += d;
-                xm.k[c - ny] -= d;
-            } else {
-                xp.p[c - ny - nk] += d;
-                xm.p[c - ny - nk] -= d;
-            }
-            let mut rp = sys.zero_residual();
-            let mut rm = sys.zero_residual();
-            sys.residual(&xp, &mut rp).unwrap();
-            sys.residual(&xm, &mut rm).unwrap();
-            let (fp, fm) = (flat(&rp), flat(&rm));
-            for i in 0..size {
-                jm[c * size + i] = (fp[i] - fm[i]) / (2.0 * d);
-            }
-        }
+        let (mut jm, size) = difference_jacobian(&mut sys, &x, if full { 2 } else { 0 });
         let mut rhs: Vec<f64> = flat(&r).iter().map(|v| -v).collect();
         let mut piv = vec![0; size];
         crate::linalg::lu_panel(&mut jm, size, size, size, &mut piv).unwrap();
@@ -380,37 +390,7 @@ fn split_block_matches_sparse_and_dense() {
             );
         }
         // the difference-quotient Jacobian of the residual, densely
-        let flat = |r: &Residual| -> Vec<f64> {
-            r.stage
-                .iter()
-                .chain(&r.cont)
-                .chain(&r.bc)
-                .chain(&r.dense)
-                .copied()
-                .collect()
-        };
-        let (ny, nk) = (x.y.len(), x.k.len());
-        let size = ny + nk + 1;
-        let mut jm = vec![0.0; size * size];
-        for c in 0..size {
-            let (mut xp, mut xm) = (x.clone(), x.clone());
-            let d = 1e-6;
-            let (p, q) = if c < ny {
-                (&mut xp.y[c], &mut xm.y[c])
-            } else if c < ny + nk {
-                (&mut xp.k[c - ny], &mut xm.k[c - ny])
-            } else {
-                (&mut xp.p[0], &mut xm.p[0])
-            };
-            *p += d;
-            *q -= d;
-            let (mut rp, mut rm) = (sys.zero_residual(), sys.zero_residual());
-            sys.residual(&xp, &mut rp).unwrap();
-            sys.residual(&xm, &mut rm).unwrap();
-            for (i, (u, v)) in flat(&rp).iter().zip(flat(&rm)).enumerate() {
-                jm[c * size + i] = (u - v) / (2.0 * d);
-            }
-        }
+        let (mut jm, size) = difference_jacobian(&mut sys, &x, 1);
         let mut piv = vec![0; size];
         let dense = crate::linalg::lu_panel(&mut jm, size, size, size, &mut piv).unwrap();
         // entries to ~1e-10 (central differences of smooth functions at
