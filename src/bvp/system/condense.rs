@@ -156,8 +156,8 @@ fn condense_interval<P: Problem + ?Sized>(
     let wcols = mn + n + nq;
     let j = iv.j;
     let h = sh.t[j + 1] - sh.t[j];
+    // (every entry of [W_j | J_j | J^p_j] is written below)
     let wa = &mut *iv.wa;
-    wa.fill(0.0);
     iv.dint_pk.fill(0.0);
     ws.row_nz.fill(false);
     ws.col_nz.fill(false);
