@@ -86,26 +86,20 @@ impl Split<'_> {
 /// constants.
 pub(super) fn classify(row_nz: &[bool], col_nz: &[bool], comps: &mut [usize]) -> (usize, usize) {
     let n = row_nz.len();
-    let core = (0..n).filter(|&i| row_nz[i] && col_nz[i]);
-    let constants = (0..n).filter(|&i| !row_nz[i]);
-    let quadratures = (0..n).filter(|&i| row_nz[i] && !col_nz[i]);
-    let mut len = 0;
-    let (mut nc, mut nf) = (0, 0);
-    for i in core {
-        comps[len] = i;
-        len += 1;
-        nc += 1;
+    let is_core = |i: &usize| row_nz[*i] && col_nz[*i];
+    let is_constant = |i: &usize| !row_nz[*i];
+    let is_quadrature = |i: &usize| row_nz[*i] && !col_nz[*i];
+    let order = (0..n)
+        .filter(is_core)
+        .chain((0..n).filter(is_constant))
+        .chain((0..n).filter(is_quadrature));
+    for (slot, i) in comps.iter_mut().zip(order) {
+        *slot = i;
     }
-    for i in constants {
-        comps[len] = i;
-        len += 1;
-        nf += 1;
-    }
-    for i in quadratures {
-        comps[len] = i;
-        len += 1;
-    }
-    (nc, nf)
+    (
+        (0..n).filter(is_core).count(),
+        (0..n).filter(is_constant).count(),
+    )
 }
 
 /// Packs the raw W_j (the first (m n)² values of `wa`, column-major) into
