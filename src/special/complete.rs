@@ -4,6 +4,19 @@ use super::Modulus;
 use super::coeffs::{E_PIECES, K_PIECES, PIECE_OF, PK, QK, RE, SE};
 use super::poly::Poly;
 
+/// floor(320 m) for m ∈ [0, 0.95), the index into `PIECE_OF`, by the
+/// 1.5·2⁵² rounding trick: 320 m − ½ ∈ [−½, 303.5) rounded to an integer
+/// lands in the low bits (−½ rounds to the even 0). A float-to-int `as` cast
+/// saturates and maps NaN to 0, ~10 instructions more per call (K 6.9 →
+/// 6.5 ns replayed, 93 → 84 instructions per call in the bench loop). Where
+/// 320 m is an integer the tie may round down: the piece to the left, at its
+/// own border. The `min` only spares a bounds check.
+#[inline(always)]
+fn slot(m: f64) -> usize {
+    const ROUND: f64 = 6_755_399_441_055_744.0;
+    ((((m * 320.0 - 0.5) + ROUND).to_bits() as u32) as usize).min(PIECE_OF.len() - 1)
+}
+
 /// The piece of [0, 0.95) holding m, and the offset t = m − centre. For
 /// m ≥ ½ the offset is formed from m₁ as (1 − centre) − m₁ (1 − centre is
 /// exact), so that a modulus given by its complement loses nothing.
@@ -13,7 +26,7 @@ fn piece<const N: usize>(
     m: f64,
     mc: f64,
 ) -> (&'static Poly<N>, f64) {
-    let slot = ((m * 320.0) as usize).min(PIECE_OF.len() - 1);
+    let slot = slot(m);
     let p = &table[usize::from(PIECE_OF[slot])];
     // Branch-free select (m < ½ is a coin toss on uniform input).
     let mask = 0u64.wrapping_sub(u64::from(m < 0.5));
@@ -199,5 +212,35 @@ pub(crate) fn ellip_e_dd(modulus: Modulus) -> (f64, f64) {
         let (p, pl) = SE.eval_t(t);
         let (q, ql) = RE.eval_t(t);
         (1.0, mc * (p + (pl + -mc.ln() * (q + ql))))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::slot;
+
+    /// The slot is floor(320 m), or one less where 320 m is an integer (a
+    /// piece's border), on a dense grid, at every border and its neighbours.
+    #[test]
+    fn slot_is_floor() {
+        let check = |m: f64| {
+            let x = m * 320.0;
+            let s = slot(m) as f64;
+            assert!(
+                s == x.floor() || (x == x.floor() && s == x - 1.0),
+                "m = {m}: slot {s}"
+            );
+        };
+        for i in 0..950_000 {
+            check(f64::from(i) * 1e-6);
+        }
+        for k in 0..304 {
+            let m = f64::from(k) / 320.0;
+            for m in [m, m.next_up(), m.next_down().max(0.0)] {
+                check(m);
+            }
+        }
+        check(0.95_f64.next_down());
+        check(1e-300);
     }
 }
