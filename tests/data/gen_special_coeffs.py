@@ -255,33 +255,15 @@ def estrin_names(var, names):
 
 
 def carlson_rust():
-    rf = rf_terms()
+    # R_F's series (rf_terms, order 15) is no longer emitted: F is computed by
+    # the half-argument transformation (src/special/half_argument.rs) since
+    # issue 9's fourth pass; only R_D (for ε and the derivatives) is left.
     out = [
         "//! GENERATED FILE, do not edit: `python3 tests/data/gen_special_coeffs.py`.",
         "//! Exempt from rustfmt (`#[rustfmt::skip]` in `mod.rs`).",
-        f"//! Taylor series of R_F (order {RF_ORDER}) and R_D (order {RD_ORDER}) about the mean.",
+        f"//! Taylor series of R_D (order {RD_ORDER}) about the mean.",
         "#![allow(clippy::unreadable_literal, clippy::excessive_precision)]",
     ]
-    for name, order, doc in [
-        ("rf_series", RF_ORDER, ""),
-    ]:
-        rf = rf_terms(order)
-        out += [
-            "",
-            f"/// R_F(x, y, z) √A − 1 in the symmetric E2 = XY − Z², E3 = XYZ.{doc}",
-            "#[inline(always)]",
-            f"pub(super) fn {name}(e2: f64, e3: f64) -> f64 {{",
-        ]
-        bmax = max(b for _, b in rf)
-        out += ["    let e2_2 = e2 * e2;", "    let e2_4 = e2_2 * e2_2;", "    let e3_2 = e3 * e3;"]
-        if bmax >= 4:
-            out.append("    let e3_4 = e3_2 * e3_2;")
-        for b in range(bmax + 1):
-            amax = max(a for a, bb in rf if bb == b)
-            coefs = [rf.get((a, b), Fraction(0)) for a in range(amax + 1)]
-            out.append(f"    let p{b} = {bare(estrin('e2', coefs))};")
-        out.append(f"    {bare(estrin_names('e3', [f'p{b}' for b in range(bmax + 1)]))}")
-        out.append("}")
     rd = rd_terms()
     out += [
         "",
