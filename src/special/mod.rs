@@ -22,9 +22,13 @@
 //! K′ = K(k′) is `ellip_k(modulus.complementary())`.
 //!
 //! # Methods, and why
-//! - **K, E**: exact Taylor polynomials (degree ≤ 10) about the centres of
-//!   84 pieces of [0, 0.95) (widths 1/40 down to 1/320 as m nears 1), with
-//!   the constant term in double-double, and for m ≥ 0.95 the logarithmic
+//! - **K, E**: exact Taylor polynomials (degree ≤ 8 for K, ≤ 7 for E)
+//!   about the centres (doubles with 1 − centre exact) of 192 pieces of
+//!   [0, 0.95) (widths 1/80 down to 1/1280 as m nears 1; found from
+//!   ⌊1280 m⌋ through a table), with the constant term in double-double,
+//!   the offset t = (1 − centre) − m₁ (for m < ½ the K and E that reduce
+//!   u modulo 2K, 2E take t = m − centre, exact for a modulus given by
+//!   m), and for m ≥ 0.95 the logarithmic
 //!   expansion K = PK(m₁) − ln m₁ · QK(m₁),
 //!   E = 1 + m₁ (SE(m₁) − ln m₁ · RE(m₁)) (DLMF 19.12.1–2), every term
 //!   positive. Coefficients come from the Gauss series by exact
