@@ -1,54 +1,22 @@
-//! Carlson's symmetric integrals R_F and R_D by duplication (DLMF 19.36.1,
-//! 19.36.2; Carlson, Numer. Algorithms 10 (1995) 13–26), crate-private.
+//! Carlson's symmetric integral R_D by duplication (DLMF 19.36.2; Carlson,
+//! Numer. Algorithms 10 (1995) 13–26), crate-private, for ε and the
+//! derivatives in m (F no longer uses R_F: `half_argument.rs`).
 //!
 //! ```text
-//! R_F(x,y,z) = ½ ∫0^∞ dt / √((t+x)(t+y)(t+z))
 //! R_D(x,y,z) = 3/2 ∫0^∞ dt / (√((t+x)(t+y)) (t+z)^{3/2})
 //! ```
 //! Each duplication step replaces (x, y, z) by ((x+λ)/4, …) with
 //! λ = √x√y + √y√z + √z√x, shrinking the relative spread by 4. The series
-//! about the mean (generated, `carlson_series.rs`) is carried to order 15
-//! for R_F and 10 for R_D instead of DLMF's 7, which lets the loop stop at
-//! a spread of 0.1 (R_F) or 0.035 (R_D) instead of ~2e-3: two to three
-//! duplications (three square roots each) fewer.
+//! about the mean (generated, `carlson_series.rs`) is carried to order 10
+//! instead of DLMF's 7, which lets the loop stop at a spread of 0.035
+//! instead of ~2e-3: two to three duplications (three square roots each)
+//! fewer.
 
-use super::carlson_series::{rd_series, rf_series};
+use super::carlson_series::rd_series;
 
-/// Relative spread max|X| at which the order-15 R_F series is exact to
-/// rounding (truncation measured ≤ 1.2e-18 against mpmath at 0.1).
-const TOL_RF: f64 = 0.1;
-/// The same for the order-10 R_D series (≤ 4.2e-18 at 0.035).
+/// Relative spread max|X| at which the order-10 R_D series is exact to
+/// rounding (truncation measured ≤ 4.2e-18 against mpmath at 0.035).
 const TOL_RD: f64 = 0.035;
-
-/// R_F(x, y, z) for x, y, z ≥ 0 (at most one zero), given also √x, √y,
-/// √z (the callers know them, which saves the square roots of the first
-/// duplication step).
-#[inline(always)]
-pub(crate) fn rf_roots(x: f64, y: f64, z: f64, sx: f64, sy: f64, sz: f64) -> f64 {
-    let (x0, y0) = (x, y);
-    let (mut x, mut y, mut z) = (x, y, z);
-    let (mut sx, mut sy, mut sz) = (sx, sy, sz);
-    let a0 = (x + y + z) * (1.0 / 3.0);
-    let mut a = a0;
-    let q = (a0 - x).abs().max((a0 - y).abs()).max((a0 - z).abs()) * (1.0 / TOL_RF);
-    let mut scale = 1.0; // 4^-n
-    while scale * q >= a {
-        let lambda = sx * (sy + sz) + sy * sz;
-        x = 0.25 * (x + lambda);
-        y = 0.25 * (y + lambda);
-        z = 0.25 * (z + lambda);
-        a = 0.25 * (a + lambda);
-        scale *= 0.25;
-        (sx, sy, sz) = (x.sqrt(), y.sqrt(), z.sqrt());
-    }
-    let inv = scale / a;
-    let xx = (a0 - x0) * inv;
-    let yy = (a0 - y0) * inv;
-    let zz = -(xx + yy);
-    let e2 = xx * yy - zz * zz;
-    let e3 = xx * yy * zz;
-    (1.0 + rf_series(e2, e3)) / a.sqrt()
-}
 
 /// The R_D series from the scaled deviations X, Y, Z (X + Y + 3Z = 0).
 #[inline(always)]

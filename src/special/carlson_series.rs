@@ -1,23 +1,7 @@
 //! GENERATED FILE, do not edit: `python3 tests/data/gen_special_coeffs.py`.
 //! Exempt from rustfmt (`#[rustfmt::skip]` in `mod.rs`).
-//! Taylor series of R_F (order 15) and R_D (order 10) about the mean.
+//! Taylor series of R_D (order 10) about the mean.
 #![allow(clippy::unreadable_literal, clippy::excessive_precision)]
-
-/// R_F(x, y, z) √A − 1 in the symmetric E2 = XY − Z², E3 = XYZ.
-#[inline(always)]
-pub(super) fn rf_series(e2: f64, e3: f64) -> f64 {
-    let e2_2 = e2 * e2;
-    let e2_4 = e2_2 * e2_2;
-    let e3_2 = e3 * e3;
-    let e3_4 = e3_2 * e3_2;
-    let p0 = ((0.0 + e2 * -0.1) + e2_2 * (0.041666666666666664 + e2 * -0.02403846153846154)) + e2_4 * ((0.01608455882352941 + e2 * -0.01171875) + e2_2 * (0.0090234375 + e2 * -0.007223195043103448));
-    let p1 = ((0.07142857142857142 + e2 * -0.06818181818181818) + e2_2 * (0.0625 + e2 * -0.05756578947368421)) + e2_4 * ((0.053498641304347824 + e2 * -0.050130208333333336) + e2_2 * 0.04730027721774194);
-    let p2 = ((0.028846153846153848 + e2 * -0.05514705882352941) + e2_2 * (0.078125 + e2 * -0.0984375)) + e2_4 * 0.11668238146551724;
-    let p3 = (0.01644736842105263 + e2 * -0.04755434782608696) + e2_2 * (0.09114583333333333 + e2 * -0.14553931451612903);
-    let p4 = 0.0109375 + e2 * -0.04242995689655173;
-    let p5 = 0.007938508064516129;
-    ((p0 + e3 * p1) + e3_2 * (p2 + e3 * p3)) + e3_4 * (p4 + e3 * p5)
-}
 
 /// R_D(x, y, z) A^{3/2} − 1 in E2 … E5 of (X, Y, Z, Z, Z).
 #[inline(always)]

@@ -1,6 +1,7 @@
-//! E(φ|m) on [0, π/2] by the half-argument transformation and a Maclaurin
-//! series in y = sin²φ (after T. Fukushima, Math. Comp. 80 (2011)
-//! 1725–1743), in a form with no cancellation (crate-private).
+//! E(φ|m) and F(φ|m) on [0, π/2] by the half-argument transformation and
+//! Maclaurin series in y = sin²φ (after T. Fukushima, Math. Comp. 80
+//! (2011) 1725–1743 and Numer. Math. 116 (2010) 687–719), E in a form with
+//! no cancellation (crate-private; F at [`f_half_argument`]).
 //!
 //! With u = F(φ|m), s = sn u = sin φ, c = cn u = cos φ, d = dn u = Δ(φ),
 //! y = s², write E as sin φ plus a positive remainder:
@@ -106,4 +107,60 @@ pub(crate) fn e_half_argument(s: f64, c: f64, d: f64, m: f64, mc: f64) -> f64 {
         scale *= 2.0;
     }
     s + mc * (sum + scale * (sn * y * series(&h, y)))
+}
+
+/// Halving stops for F once y = sin² ≤ this: the 15-term series below then
+/// leaves ≤ 0.07¹⁵/31 < 2⁻⁶² of F (its coefficients are ≤ 1 for m ≤ 1).
+const F_REACH: f64 = 0.07;
+
+/// F(r|m) for 0 ≤ r ≤ π/2 from s = sin r, c = cos r ≥ 0, d = Δ(r), by the
+/// half-argument transformation: F(u) = u, so halving u (as for E) until
+/// y ≤ 0.07 and multiplying by 2ⁿ is exact, and at the small amplitude
+///
+/// ```text
+/// F = s Σ P_k(m) y^k / (2k + 1),   y = s²,  k = 0…14
+/// P_k = [y^k] ((1 − y)(1 − m y))^{−1/2}
+///     = ((2k − 1)/(2k)) (1 + m) P_{k−1} − ((k − 1)/k) m P_{k−2},   P₀ = 1, P₁ = (1 + m)/2
+/// ```
+/// (the binomial series of 1/Δ integrated term by term; the recurrence is
+/// that of the Legendre functions, as ((1 − y)(1 − my))^{−1/2} is their
+/// generating function in disguise, and only depends on m, so it runs
+/// beside the halvings). A halving here takes one division,
+/// 1/((1 + c)(1 + d)), for y and for 1/(1 + d) alike, so the loop's exit
+/// test gets y early.
+#[inline(always)]
+pub(crate) fn f_half_argument(s: f64, c: f64, d: f64, m: f64, mc: f64) -> f64 {
+    let e1 = 1.0 + m;
+    let mut p = [0.0; 15];
+    p[0] = 1.0;
+    p[1] = 0.5 * e1;
+    for k in 2..15 {
+        let kf = k as f64;
+        p[k] = ((2.0 * kf - 1.0) / (2.0 * kf)) * e1 * p[k - 1] - ((kf - 1.0) / kf) * m * p[k - 2];
+    }
+    let (mut y, mut c, mut d) = (s * s, c, d);
+    let (mut sn, mut scale) = (s, 1.0);
+    let mut n = 0;
+    while y > F_REACH && n < MAX_HALVINGS {
+        let (pc, pd) = (1.0 + c, 1.0 + d);
+        let inv = 1.0 / pd;
+        // While c < ½, sn²(u/2) = (1 − c)/(1 + d) keeps every digit (see
+        // `halve`); above, y/((1 + c)(1 + d)).
+        let (num, den) = if c < 0.5 { (1.0 - c, pd) } else { (y, pc * pd) };
+        (y, c, d) = (
+            num / den,
+            ((c + d) * inv).sqrt(),
+            ((mc + d + m * c) * inv).sqrt(),
+        );
+        sn = y.sqrt();
+        scale *= 2.0;
+        n += 1;
+    }
+    let a = |k: usize| p[k] * (1.0 / (2 * k + 1) as f64);
+    let y2 = y * y;
+    let y4 = y2 * y2;
+    let q = |k: usize| a(k) + a(k + 1) * y;
+    let series = ((q(0) + q(2) * y2) + (q(4) + q(6) * y2) * y4)
+        + ((q(8) + q(10) * y2) + (q(12) + a(14) * y2) * y4) * (y4 * y4);
+    scale * sn * series
 }

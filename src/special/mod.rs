@@ -22,9 +22,13 @@
 //! K′ = K(k′) is `ellip_k(modulus.complementary())`.
 //!
 //! # Methods, and why
-//! - **K, E**: exact Taylor polynomials (degree ≤ 10) about the centres of
-//!   84 pieces of [0, 0.95) (widths 1/40 down to 1/320 as m nears 1), with
-//!   the constant term in double-double, and for m ≥ 0.95 the logarithmic
+//! - **K, E**: exact Taylor polynomials (degree ≤ 8 for K, ≤ 7 for E)
+//!   about the centres (doubles with 1 − centre exact) of 192 pieces of
+//!   [0, 0.95) (widths 1/80 down to 1/1280 as m nears 1; found from
+//!   ⌊1280 m⌋ through a table), with the constant term in double-double,
+//!   the offset t = (1 − centre) − m₁ (for m < ½ the K and E that reduce
+//!   u modulo 2K, 2E take t = m − centre, exact for a modulus given by
+//!   m), and for m ≥ 0.95 the logarithmic
 //!   expansion K = PK(m₁) − ln m₁ · QK(m₁),
 //!   E = 1 + m₁ (SE(m₁) − ln m₁ · RE(m₁)) (DLMF 19.12.1–2), every term
 //!   positive. Coefficients come from the Gauss series by exact
@@ -36,14 +40,19 @@
 //!   −e ln 2 exact, ln f ≤ 0.7 from libm), which took K from 1.2 to
 //!   ≤ 0.74 ulp; the K that reduces u modulo 2K also carries L·QK exactly
 //!   (Dekker), so 2K is right to ~1e-32.
-//! - **F**: φ = jπ + r (π in three Cody–Waite parts), then Carlson's
-//!   R_F (DLMF 19.25.5) with 1 − m sin²r formed as cos²r + m₁ sin²r, and
-//!   within the last stretch before π/2 (cos²r < m₁ sin²r/4) the
-//!   complementary amplitude ψ (tan ψ = cot r/k′): F = K − F(ψ),
-//!   E = E − E(ψ) + m sin r sin ψ. The duplication carries the R_F series to
-//!   order 15 (exact coefficients, same script), so it stops two to three
-//!   steps earlier than with DLMF's 7th-order series; the series is
-//!   evaluated by Estrin's scheme, and sin r, cos r come from fdlibm's
+//! - **F**: φ = jπ + r (π in three Cody–Waite parts), 1 − m sin²r formed
+//!   as cos²r + m₁ sin²r, and within the last stretch before π/2
+//!   (cos²r < m₁ sin²r/4) the complementary amplitude ψ (tan ψ = cot r/k′):
+//!   F = K − F(ψ), E = E − E(ψ) + m sin r sin ψ. F(r) itself by the
+//!   half-argument transformation (after Fukushima 2010): F(u) = u, so
+//!   u is halved through sn²(u/2) = (1 − cn)/(1 + dn) (DLMF 22.6.19–21,
+//!   one division and two square roots a step) until sin² ≤ 0.07, and
+//!   F = 2ⁿ F(u/2ⁿ) from a 15-term series in sin² whose coefficients
+//!   P_k(m)/(2k + 1) follow a three-term recurrence. It replaced Carlson's
+//!   R_F (three square roots a duplication step; 40 → 30 ns uniform, 55 →
+//!   45 ns extreme), at a small cost in accuracy (1.07 → 1.08 ulp norm. on
+//!   the table, 0.93 → 1.34 on 20 000 random points: every halving rounds
+//!   sin², and F inherits all of it). sin r, cos r come from fdlibm's
 //!   polynomial kernels inline (≤ 0.81 ulp) rather than two libm calls,
 //!   which alone took ~15 of ~40 ns in `ellip_f`.
 //! - **E(φ)**: the same reduction and fold, then E(r) = sin r + m₁ H(r),
@@ -64,8 +73,8 @@
 //!   - for m₁ ≤ 0.1 and v ≥ 1, the ascending Landen (Gauss) transformation
 //!     (DLMF 22.7.4–7): k′ → (1 − k)/(1 + k) = m₁/(1 + k)², so m₁ falls as
 //!     ~m₁²/16 per step, until the first-order expansion about m = 1
-//!     (DLMF 22.10.4–6, from e^{−v} and e^{−2v} − 1: two `exp`, or `expm1`
-//!     for v < ln 2) is exact to rounding at
+//!     (DLMF 22.10.4–6, from e^{−v} and e^{−2v} − 1 = (e^{−v})² − 1: one
+//!     `exp`, and `expm1` for v < ln 2) is exact to rounding at
 //!     the scaled argument (m₁ e^{2w} ≤ 2⁻²⁴); then back up with
 //!     sn = (1 + k′) s c/d, cn = (d² − k′)/((1 − k′) d),
 //!     dn = (d² + k′)/((1 + k′) d) (one division per step; at most four
@@ -126,12 +135,12 @@
 //! |---|---|---|---|---|---|---|
 //! | K | 0.18 | 0.59 | 0.74 | – | – | – |
 //! | E | 0.14 | 0.49 | 0.50 | – | – | – |
-//! | F(φ) | 0.28 | 1.16 | 3.85 | 0.18 | 0.79 | 1.07 |
-//! | E(φ) | 0.21 | 0.91 | 1.53 | 0.11 | 0.58 | 1.14 |
-//! | sn | 0.17 | 261 | 1.5e16 | 0.08 | 0.50 | 1.02 |
-//! | cn | 0.68 | 5.2e13 | 2.4e16 | 0.05 | 0.46 | 1.25 |
-//! | dn | 0.40 | 35 | 143 | 0.05 | 0.47 | 0.89 |
-//! | am | 0.20 | 1.03 | 1.72 | 0.14 | 0.58 | 0.95 |
+//! | F(φ) | 0.28 | 1.37 | 3.85 | 0.18 | 0.81 | 1.08 |
+//! | E(φ) | 0.21 | 0.90 | 1.53 | 0.11 | 0.58 | 1.14 |
+//! | sn | 0.17 | 88 | 1.5e16 | 0.08 | 0.50 | 1.02 |
+//! | cn | 0.65 | 4.6e13 | 2.4e16 | 0.05 | 0.45 | 1.25 |
+//! | dn | 0.39 | 32 | 125 | 0.05 | 0.47 | 0.89 |
+//! | am | 0.20 | 1.03 | 1.72 | 0.14 | 0.59 | 0.95 |
 //! | ε | 0.19 | 1.05 | 1.58 | 0.12 | 0.96 | 1.58 |
 //!
 //! [`FixedModulus`] measures the same or better (sn 0.83, cn 1.16). The m-derivatives (tables by
@@ -150,18 +159,18 @@
 //! # Performance
 //! ns per call on the project's shared 2-core machine (x86-64 baseline, no
 //! FMA), interleaved minimum over 1024 inputs, with `ellip` 1.2.3 in the
-//! same passes (medians of four runs at load average 6–8; E(φ): median of
-//! three runs at load 9 after its half-argument rewrite); "extreme" is
-//! m₁ = 10^−U(0,15), φ = π/2 − 10^−U(0,8), u ∈ [0, 100]:
+//! same passes (medians of three runs at load average 6, issue 9's fourth
+//! pass); "extreme" is m₁ = 10^−U(0,15), φ = π/2 − 10^−U(0,8),
+//! u ∈ [0, 100]:
 //!
 //! | function | uniform | ellip | extreme | ellip |
 //! |---|---|---|---|---|
-//! | K | 6.9 | 12.0 | 12.0 | 21.0 |
-//! | E | 6.8 | 13.4 | 9.4 | 35.4 |
-//! | F(φ) | 40.8 | 69.1 | 57.3 | 96.1 |
-//! | E(φ) | 40.6 | 105.1 | 53.2 | 131.9 |
-//! | jacobi | 63.7 | – | 78.3 | – |
-//! | [`FixedModulus::jacobi`] (128 u per modulus) | 20.3 | – | 24.9 | – |
+//! | K | 4.9 | 11.1 | 11.6 | 20.0 |
+//! | E | 4.8 | 12.7 | 8.9 | 34.3 |
+//! | F(φ) | 29.7 | 68.0 | 46.7 | 94.4 |
+//! | E(φ) | 39.6 | 103.7 | 50.2 | 130.1 |
+//! | jacobi | 58.8 | – | 77.3 | – |
+//! | [`FixedModulus::jacobi`] (128 u per modulus) | 20.1 | – | 22.5 | – |
 //!
 //! Reproduce with `cargo bench --bench special -- --warm-up-time 1
 //! --measurement-time 2`; criterion's means and the history are in
@@ -181,7 +190,9 @@
 //!   conditional duplication*, Numer. Math. 123 (2013) 585–605;
 //!   *Precise and fast computation of a general incomplete elliptic
 //!   integral of second kind by half and double argument transformations*,
-//!   Math. Comp. 80 (2011) 1725–1743.
+//!   Math. Comp. 80 (2011) 1725–1743;
+//!   *Fast computation of incomplete elliptic integral of first kind by
+//!   half argument transformation*, Numer. Math. 116 (2010) 687–719.
 
 mod amplitude;
 mod carlson;

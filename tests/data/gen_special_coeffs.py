@@ -33,17 +33,16 @@ NSER = 400  # terms of the m1 series (0.1^400: far beyond any need)
 
 
 def intervals():
-    """[lo, hi) pieces of [0, 0.95): width 1/40, 1/80, 1/160, 1/320 on
-    [0, .5), [.5, .7), [.7, .9), [.9, .95)."""
+    """[lo, hi) pieces of [0, 0.95): width 1/80, 1/160, 1/320, 1/640, 1/1280
+    on [0, .5), [.5, .7), [.7, .875), [.875, .925), [.925, .95).  (Issue 9,
+    fourth pass: narrower than before, so that no K piece needs more than
+    degree 8 nor E more than 7 -- fewer instructions per call.)"""
     out = []
-    for i in range(20):
-        out.append((mpf(i) / 40, mpf(i + 1) / 40))
-    for i in range(16):
-        out.append((mpf(1) / 2 + mpf(i) / 80, mpf(1) / 2 + mpf(i + 1) / 80))
-    for i in range(32):
-        out.append((mpf(7) / 10 + mpf(i) / 160, mpf(7) / 10 + mpf(i + 1) / 160))
-    for i in range(16):
-        out.append((mpf(9) / 10 + mpf(i) / 320, mpf(9) / 10 + mpf(i + 1) / 320))
+    for lo, hi, n in [("0", "0.5", 80), ("0.5", "0.7", 160), ("0.7", "0.875", 320),
+                      ("0.875", "0.925", 640), ("0.925", "0.95", 1280)]:
+        a, b = mpf(lo), mpf(hi)
+        for i in range(int((b - a) * n + mpf("0.5"))):
+            out.append((a + mpf(i) / n, a + mpf(i + 1) / n))
     return out
 
 
@@ -89,8 +88,11 @@ def main():
     out.append("")
     ks, es = [], []
     for lo, hi in intervals():
-        c = (lo + hi) / 2
-        h = (hi - lo) / 2
+        # The centre on the 2^-20 grid: a double with 1 - c exact, about which
+        # the Taylor coefficients are exact (t = m - c then carries no
+        # rounding of c; the reduction modulo 2K relies on it).
+        c = mpf(round(float((lo + hi) / 2) * 2**20)) / 2**20
+        h = max(c - lo, hi - c)
         kc = truncate(taylor_hyp(mpf(1) / 2, mpf(1) / 2, 1, c, 60), h, ellipk(hi))
         ec = truncate(taylor_hyp(-mpf(1) / 2, mpf(1) / 2, 1, c, 60), h, ellipe(hi))
         ks.append((c, kc))
@@ -109,14 +111,14 @@ def main():
     out.append(f"pub(super) static E_PIECES: [Poly<NE>; {len(es)}] = [")
     out += [poly_rust(c, e, ne) for c, e in es]
     out.append("];")
-    # Piece index from floor(320 m): widths 8, 4, 2, 1 (/320) on [0, .5), [.5, .7), [.7, .9), [.9, .95).
-    lut = (
-        [i // 8 for i in range(160)]
-        + [20 + (i - 160) // 4 for i in range(160, 224)]
-        + [36 + (i - 224) // 2 for i in range(224, 288)]
-        + [68 + (i - 288) for i in range(288, 304)]
-    )
-    out.append("/// Piece index of m ∈ [0, 0.95) from ⌊320 m⌋.")
+    # Piece index from floor(1280 m): the pieces above, padded with the last
+    # piece to 2048 entries so that the index is masked, not bounds-checked.
+    lut = []
+    for k, (lo, hi) in enumerate(intervals()):
+        lut += [k] * int((hi - lo) * 1280 + mpf("0.5"))
+    assert len(lut) == 1216 and len(intervals()) < 256
+    lut += [lut[-1]] * (2048 - len(lut))
+    out.append("/// Piece index of m ∈ [0, 0.95) from ⌊1280 m⌋ (padded to 2048 entries).")
     out.append(f"pub(super) static PIECE_OF: [u8; {len(lut)}] = {lut};")
     # m1 series.
     half = mpf(1) / 2
@@ -255,33 +257,15 @@ def estrin_names(var, names):
 
 
 def carlson_rust():
-    rf = rf_terms()
+    # R_F's series (rf_terms, order 15) is no longer emitted: F is computed by
+    # the half-argument transformation (src/special/half_argument.rs) since
+    # issue 9's fourth pass; only R_D (for ε and the derivatives) is left.
     out = [
         "//! GENERATED FILE, do not edit: `python3 tests/data/gen_special_coeffs.py`.",
         "//! Exempt from rustfmt (`#[rustfmt::skip]` in `mod.rs`).",
-        f"//! Taylor series of R_F (order {RF_ORDER}) and R_D (order {RD_ORDER}) about the mean.",
+        f"//! Taylor series of R_D (order {RD_ORDER}) about the mean.",
         "#![allow(clippy::unreadable_literal, clippy::excessive_precision)]",
     ]
-    for name, order, doc in [
-        ("rf_series", RF_ORDER, ""),
-    ]:
-        rf = rf_terms(order)
-        out += [
-            "",
-            f"/// R_F(x, y, z) √A − 1 in the symmetric E2 = XY − Z², E3 = XYZ.{doc}",
-            "#[inline(always)]",
-            f"pub(super) fn {name}(e2: f64, e3: f64) -> f64 {{",
-        ]
-        bmax = max(b for _, b in rf)
-        out += ["    let e2_2 = e2 * e2;", "    let e2_4 = e2_2 * e2_2;", "    let e3_2 = e3 * e3;"]
-        if bmax >= 4:
-            out.append("    let e3_4 = e3_2 * e3_2;")
-        for b in range(bmax + 1):
-            amax = max(a for a, bb in rf if bb == b)
-            coefs = [rf.get((a, b), Fraction(0)) for a in range(amax + 1)]
-            out.append(f"    let p{b} = {bare(estrin('e2', coefs))};")
-        out.append(f"    {bare(estrin_names('e3', [f'p{b}' for b in range(bmax + 1)]))}")
-        out.append("}")
     rd = rd_terms()
     out += [
         "",
