@@ -229,8 +229,10 @@ const SCENES: [(f64, f64, f64); 7] = [
 /// A/B near 90°, small ν) they see more (docs/ACCURACY.md: 6 at
 /// (89°, 30, 0.05), 5 at (78.5°, 10, −0.6)), never fewer. The scenes are
 /// at least 0.1° from every line, as for n = 4; N = 24 (the diagram's
-/// mesh) is 3 intervals per coil here, and its cusps are within 1e-3° of
-/// N = 96 (docs/ACCURACY.md, `--coils 8 --check`), far inside the 0.1°.
+/// mesh) is 3 intervals per coil here, and its cusps are within 6.5e-8 rad
+/// (3.7e-6°) of N = 96 (docs/ACCURACY.md, `--coils 8 --check`), far inside
+/// the 0.1°. The seven counts are those of the adaptive pull to
+/// F/((2πn)²B) = 30 (docs/ACCURACY.md): these scenes pop out below 3.
 #[test]
 fn direct_pulls_see_at_least_the_n8_pop_outs_the_diagram_predicts() {
     let d =
