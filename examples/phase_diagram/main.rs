@@ -71,6 +71,13 @@ fn at(p: &FoldPoint) -> CuspAt {
     }
 }
 
+/// The largest angle between tangents of a cusp curve (radians; the
+/// continuation's default is 0.35). Near swallowtails the cusp curve's
+/// tangent is noise (`CuspSearch::curve_max_angle`); with 0.35 the steps
+/// shrink into that neighbourhood and stall there (n = 8, pop-out 2 at
+/// ν = −0.9, even when resumed with 1.2), with 1.2 they step over it.
+const CURVE_MAX_ANGLE: f64 = 1.2;
+
 /// A traced cusp curve: its points in order, how it ended, and the fold
 /// problem's solution at its end where it reached its stop value.
 struct Traced {
@@ -198,7 +205,10 @@ fn pop_out_lines(
         Stiffness::nikolai(A_OVER_B, NU)?,
     )?;
     let family = NikolaiRod::new(rod, NU)?;
-    let search = CuspSearch::new().intervals(INTERVALS).curve_ds_max(0.5);
+    let search = CuspSearch::new()
+        .intervals(INTERVALS)
+        .curve_ds_max(0.5)
+        .curve_max_angle(CURVE_MAX_ANGLE);
     let Followed::Cusp(cusp) =
         search.follow(&family, max_fold, Rod::THETA0, 45_f64.to_radians())?
     else {

@@ -55,6 +55,7 @@ pub struct CuspSearch {
     intervals: usize,
     ds_max: f64,
     curve_ds_max: f64,
+    curve_max_angle: f64,
     max_steps: usize,
 }
 
@@ -85,6 +86,7 @@ impl CuspSearch {
     /// | [`intervals`](Self::intervals) | 48 uniform intervals, 4 Gauss points (the pull's) |
     /// | [`ds_max`](Self::ds_max) | 0.5: the largest step of a fold curve |
     /// | [`curve_ds_max`](Self::curve_ds_max) | 5: the largest step of a cusp curve |
+    /// | [`curve_max_angle`](Self::curve_max_angle) | 0.35 rad (the continuation's): the largest angle between tangents of a cusp curve |
     /// | [`max_steps`](Self::max_steps) | 400 per fold curve |
     ///
     /// The fold curves use the pull's solution weights (r, q: 1; F:
@@ -97,6 +99,7 @@ impl CuspSearch {
             intervals: 48,
             ds_max: 0.5,
             curve_ds_max: 5.0,
+            curve_max_angle: 0.35,
             max_steps: 400,
         }
     }
@@ -119,6 +122,19 @@ impl CuspSearch {
     #[must_use]
     pub fn curve_ds_max(mut self, ds: f64) -> Self {
         self.curve_ds_max = ds;
+        self
+    }
+
+    /// The largest angle (radians) between successive tangents of a cusp
+    /// curve ([`Continuation::max_angle`]). Near swallowtails the cusp
+    /// curve's tangent is noise (its Jacobian differences the fold
+    /// problem's, whose second derivatives are differences): measured on
+    /// n = 8, it turned by 0.35–1.4 rad even at Δs = 1e-8, a bend no curve
+    /// makes in that arclength. With a larger angle the steps stay long
+    /// enough to pass such places (`examples/phase_diagram` uses 1.2).
+    #[must_use]
+    pub fn curve_max_angle(mut self, angle: f64) -> Self {
+        self.curve_max_angle = angle;
         self
     }
 
@@ -300,6 +316,7 @@ impl CuspSearch {
             .step(ds)
             .step_bounds(1e-8, self.curve_ds_max)
             .locate_tolerance(1e-9)
+            .max_angle(self.curve_max_angle)
             .stop_at(to)
             .stop_when(|s: &Solution| {
                 s.parameters()[Rod::THETA0] - (core::f64::consts::FRAC_PI_2 - Self::TIP_GAP)
