@@ -280,6 +280,23 @@ pub enum Error {
         /// The mesh intervals of the solution.
         intervals: u64,
     },
+    /// A phase diagram was read at a scene it does not resolve: the
+    /// pop-out's cusp angle θ0_c is only known to lie in a range that
+    /// contains the scene's θ0 ([`crate::rod::PhaseDiagram::pop_outs`]).
+    #[error(
+        "pop-out {pop_out} is not mapped at this scene: its cusp angle lies somewhere in \
+         [{from_deg}°, {to_deg}°], which holds the scene's θ0, because {why}"
+    )]
+    NotMapped {
+        /// The pop-out (0 for the first of the pull).
+        pop_out: u64,
+        /// The range of θ0_c, in degrees.
+        from_deg: f64,
+        /// (its upper end)
+        to_deg: f64,
+        /// Why the diagram does not know θ0_c there.
+        why: &'static str,
+    },
     /// A model was asked about a spring outside what it assumes.
     #[error("the {model} model cannot answer this: {assumption}")]
     OutsideModel {

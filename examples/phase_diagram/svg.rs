@@ -82,6 +82,10 @@ pub fn draw(d: &hockle::rod::PhaseDiagram) -> String {
         H + TOP + 90.0
     );
     let _ = writeln!(s, r#"<rect width="100%" height="100%" fill="white"/>"#);
+    let _ = writeln!(
+        s,
+        r##"<defs><pattern id="unmapped" width="6" height="6" patternUnits="userSpaceOnUse" patternTransform="rotate(45)"><rect width="6" height="6" fill="#eeeeee"/><line x1="0" y1="0" x2="0" y2="6" stroke="#555555" stroke-width="2"/></pattern></defs>"##
+    );
     let a = Panel {
         x0: 0.0,
         theta: low(&on_a),
@@ -94,22 +98,29 @@ pub fn draw(d: &hockle::rod::PhaseDiagram) -> String {
         y: (-0.9, 0.49),
         log: false,
     };
-    panel(
+    // an incomplete diagram counts the mapped pop-outs: a lower bound
+    // (`PhaseDiagram::is_complete`)
+    let what = if d.is_complete() {
+        "pop-outs"
+    } else {
+        "at least these pop-outs"
+    };
+    let mut unmapped = panel(
         &mut s,
         d,
         &a,
         "A/B",
-        &format!("n = {}, ν = 0.05: pop-outs over (θ0, A/B)", d.coils()),
+        &format!("n = {}, ν = 0.05: {what} over (θ0, A/B)", d.coils()),
         |t, y| (t, y, 0.05),
         on_a,
         |p| p.a_over_b,
     );
-    panel(
+    unmapped |= panel(
         &mut s,
         d,
         &n,
         "ν",
-        &format!("n = {}, A/B = 10: pop-outs over (θ0, ν)", d.coils()),
+        &format!("n = {}, A/B = 10: {what} over (θ0, ν)", d.coils()),
         |t, y| (t, 10.0, y),
         on_nu,
         |p| p.nu,
@@ -126,6 +137,16 @@ pub fn draw(d: &hockle::rod::PhaseDiagram) -> String {
         let _ = writeln!(
             s,
             r#"<rect x="{x}" y="{}" width="16" height="12" fill="{fill}" stroke="grey"/><text x="{}" y="{}">{k} pop-outs</text>"#,
+            y - 10.0,
+            x + 20.0,
+            y
+        );
+        x += 105.0;
+    }
+    if unmapped {
+        let _ = writeln!(
+            s,
+            r#"<rect x="{x}" y="{}" width="16" height="12" fill="url(#unmapped)" stroke="grey"/><text x="{}" y="{}">not mapped</text>"#,
             y - 10.0,
             x + 20.0,
             y
@@ -164,7 +185,8 @@ fn panel(
     scene: impl Fn(f64, f64) -> (f64, f64, f64),
     line: impl Fn(Fixed) -> bool,
     coord: impl Fn(&hockle::rod::CuspAt) -> f64,
-) {
+) -> bool {
+    let mut unmapped = false;
     // cells of one count merged along each row
     let (nx, ny) = (240, 160);
     let (cw, ch) = (W / f64::from(nx), H / f64::from(ny));
@@ -173,7 +195,9 @@ fn panel(
         let count = |i: u32| {
             let t = p.theta.0 + (f64::from(i) + 0.5) / f64::from(nx) * (p.theta.1 - p.theta.0);
             let (th, ab, nu) = scene(t, y);
-            d.pop_outs(th.to_radians(), ab, nu).unwrap_or(0)
+            // None: not mapped (a swallowtail's fold-back, or beyond an
+            // unfinished line), drawn hatched
+            d.pop_outs(th.to_radians(), ab, nu).ok()
         };
         let mut i = 0;
         while i < nx {
@@ -182,7 +206,8 @@ fn panel(
             while e < nx && count(e) == k {
                 e += 1;
             }
-            if k > 0 {
+            unmapped |= k.is_none();
+            if k != Some(0) {
                 let _ = writeln!(
                     s,
                     r#"<rect x="{:.2}" y="{:.2}" width="{:.2}" height="{:.2}" fill="{}"/>"#,
@@ -190,7 +215,7 @@ fn panel(
                     TOP + H - f64::from(j + 1) * ch,
                     f64::from(e - i) * cw + 0.3,
                     ch + 0.3,
-                    fill(k)
+                    k.map_or("url(#unmapped)", fill)
                 );
             }
             i = e;
@@ -271,4 +296,5 @@ fn panel(
         x0 - 45.0,
         TOP + H / 2.0
     );
+    unmapped
 }

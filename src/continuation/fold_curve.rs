@@ -516,10 +516,25 @@ impl FoldContinuation {
             };
             found.push((c, s, kind));
         }
+        // Both rates changed sign in one step and the curve's direction in
+        // the plane reversed: one cusp whose two zeros the location found
+        // a short arclength apart (the discretisation's error), reported
+        // once, at the zero of dμ/ds (where μ turns back).
+        let reversed = l0 * l1 + m0 * m1 < -REVERSED * l0.hypot(m0) * l1.hypot(m1);
+        if found.len() == 2 && reversed {
+            found.retain(|f| f.2 != FoldPointKind::Turn(self.fold));
+            if let Some(f) = found.first_mut() {
+                f.2 = FoldPointKind::Cusp;
+            }
+        }
         found.sort_by(|a, b| a.1.total_cmp(&b.1));
         Ok(found)
     }
 }
+
+/// The cosine below which the plane direction (dλ/ds, dμ/ds) at a step's
+/// two ends counts as reversed (a turn of more than 154°).
+const REVERSED: f64 = 0.9;
 
 /// At a located zero of one rate, the other rate below this fraction of
 /// its larger value at the step's ends marks a cusp (module docs).

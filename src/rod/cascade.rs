@@ -55,6 +55,7 @@ pub struct CuspSearch {
     intervals: usize,
     ds_max: f64,
     curve_ds_max: f64,
+    curve_max_angle: f64,
     max_steps: usize,
 }
 
@@ -85,6 +86,7 @@ impl CuspSearch {
     /// | [`intervals`](Self::intervals) | 48 uniform intervals, 4 Gauss points (the pull's) |
     /// | [`ds_max`](Self::ds_max) | 0.5: the largest step of a fold curve |
     /// | [`curve_ds_max`](Self::curve_ds_max) | 5: the largest step of a cusp curve |
+    /// | [`curve_max_angle`](Self::curve_max_angle) | 0.35 rad (the continuation's): the largest angle between tangents of a cusp curve |
     /// | [`max_steps`](Self::max_steps) | 400 per fold curve |
     ///
     /// The fold curves use the pull's solution weights (r, q: 1; F:
@@ -97,6 +99,7 @@ impl CuspSearch {
             intervals: 48,
             ds_max: 0.5,
             curve_ds_max: 5.0,
+            curve_max_angle: 0.35,
             max_steps: 400,
         }
     }
@@ -119,6 +122,19 @@ impl CuspSearch {
     #[must_use]
     pub fn curve_ds_max(mut self, ds: f64) -> Self {
         self.curve_ds_max = ds;
+        self
+    }
+
+    /// The largest angle (radians) between successive tangents of a cusp
+    /// curve ([`Continuation::max_angle`]). Near swallowtails the cusp
+    /// curve's tangent is noise (its Jacobian differences the fold
+    /// problem's, whose second derivatives are differences): measured on
+    /// n = 8, it turned by 0.35–1.4 rad even at Δs = 1e-8, a bend no curve
+    /// makes in that arclength. With a larger angle the steps stay long
+    /// enough to pass such places (`examples/phase_diagram` uses 1.2).
+    #[must_use]
+    pub fn curve_max_angle(mut self, angle: f64) -> Self {
+        self.curve_max_angle = angle;
         self
     }
 
@@ -245,14 +261,27 @@ impl FoldObserver for &mut FirstCusp {
 }
 
 impl CuspSearch {
+    /// How close to 90° a cusp curve counts as having reached θ0 = 90°
+    /// (radians, [`CuspSearch::cusp_curve`]).
+    ///
+    /// A cusp curve may meet θ0 = 90° tangentially (measured on n = 8: θ0
+    /// within 1e-9 rad of 90° over 4e-4 in ln A/B, dθ0/ds → 0): a zero of
+    /// θ0 − π/2 is then not crossed, and the continuation stalls where the
+    /// curve ends. A gap of 1e-6 rad (5.7e-5°) is crossed transversally;
+    /// the pop-out's region between the gap and 90° is not resolved.
+    pub const TIP_GAP: f64 = 1e-6;
+
     /// The curve of cusps through `cusp` (a located cusp of a fold curve in
     /// `mu`: its [`FoldPoint::extended`], or a point of another cusp curve:
     /// its [`FoldPoint::solution`]), continued in `nu` from the step `ds`
-    /// towards `to`, or until θ0 reaches 90°: the fold problem's own folds
-    /// in `mu` ([`crate::continuation::FoldProblem`]). Every point is a
-    /// cusp of the force folds, its [`FoldPoint::solution`] the fold
-    /// problem's solution there; `(mu, nu)` of the points draw the
-    /// boundary of the pop-out's region in that plane.
+    /// towards `to`, or until θ0 reaches 90° − [`CuspSearch::TIP_GAP`]
+    /// ([`FoldPointKind::Event`] 0): the fold problem's own folds in `mu`
+    /// ([`crate::continuation::FoldProblem`]). Every point is a cusp of the
+    /// force folds, its [`FoldPoint::solution`] the fold problem's solution
+    /// there; `(mu, nu)` of the points draw the boundary of the pop-out's
+    /// region in that plane. The curve's turns in `mu` or `nu`
+    /// ([`FoldPointKind::Turn`]) and its own cusps ([`FoldPointKind::Cusp`]:
+    /// swallowtails, where three force folds meet) are located.
     ///
     /// # Errors
     /// As [`FoldContinuation::run`] at the start.
@@ -287,13 +316,15 @@ impl CuspSearch {
             .step(ds)
             .step_bounds(1e-8, self.curve_ds_max)
             .locate_tolerance(1e-9)
+            .max_angle(self.curve_max_angle)
             .stop_at(to)
-            .stop_when(|s: &Solution| s.parameters()[Rod::THETA0] - core::f64::consts::FRAC_PI_2)
+            .stop_when(|s: &Solution| {
+                s.parameters()[Rod::THETA0] - (core::f64::consts::FRAC_PI_2 - Self::TIP_GAP)
+            })
             .max_steps(self.max_steps);
-        // Turns of the cusp curve are not located: the readers of the
-        // curve check its shape themselves ([`super::PhaseDiagram::new`]).
-        FoldContinuation::new(mu, settings)
-            .detect_cusps(false)
-            .run(&problem, cusp, observer)
+        // Turns of the cusp curve in either parameter and its own cusps
+        // (swallowtails) are located: where it turns back in `nu` the
+        // boundary covers some `nu` twice ([`super::PhaseDiagram`]).
+        FoldContinuation::new(mu, settings).run(&problem, cusp, observer)
     }
 }

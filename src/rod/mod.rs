@@ -140,7 +140,7 @@ pub use cascade::{CuspSearch, Followed};
 pub use contact::Contact;
 pub use equilibrium::Equilibrium;
 pub use nikolai::NikolaiRod;
-pub use phase_diagram::{CuspAt, CuspLine, Fixed, PhaseDiagram};
+pub use phase_diagram::{CuspAt, CuspLine, Fixed, LineEnd, PhaseDiagram, Unfinished};
 pub use pull::{Pull, PullRun, Start};
 pub use stability::{STABILITY_SEGMENTS, SecondVariation};
 

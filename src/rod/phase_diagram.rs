@@ -2,7 +2,9 @@
 //! ([`PhaseDiagram`]).
 
 use std::fmt::Write as _;
+use std::ops::RangeInclusive;
 
+use crate::continuation::Termination;
 use crate::error::{Error, Result};
 
 /// A point of a cusp curve: where the two folds of a pop-out meet.
@@ -27,15 +29,103 @@ pub enum Fixed {
     AOverB(f64),
 }
 
-/// One cusp curve of one pop-out, in the order continuation traced it.
+/// How a [`CuspLine`] ends on one side.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LineEnd {
+    /// θ0 reached 90° (the tip of the pop-out's region,
+    /// [`super::CuspSearch::cusp_curve`]): beyond it the pop-out does not
+    /// exist.
+    Tip,
+    /// The computed range of the free parameter ended there: beyond it the
+    /// end value is taken.
+    Range,
+    /// The continuation stopped before either: beyond it θ0_c is not known
+    /// ([`Error::NotMapped`]).
+    Unfinished(Unfinished),
+}
+
+/// Why the continuation of a cusp line stopped early ([`LineEnd`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Unfinished {
+    /// The tangent kept turning by more than the maximum angle even at the
+    /// minimum step ([`Error::StepAngleTooLarge`]).
+    TangentTurned,
+    /// Newton's corrector failed even at the minimum step.
+    Newton,
+    /// The step limit was reached.
+    StepLimit,
+    /// Any other failure (a located turn or event that could not be
+    /// found, a singular or non-finite system).
+    Other,
+}
+
+impl Unfinished {
+    /// The reason of a cusp-curve run that ended with `t` (neither at its
+    /// stop value nor at an event).
+    #[must_use]
+    pub fn of(t: &Termination) -> Self {
+        match t {
+            Termination::MaxSteps(_) => Self::StepLimit,
+            Termination::Failed {
+                error: Error::StepAngleTooLarge { .. },
+                ..
+            } => Self::TangentTurned,
+            Termination::Failed {
+                error: Error::NewtonDiverged { .. } | Error::NewtonNotConverged { .. },
+                ..
+            } => Self::Newton,
+            _ => Self::Other,
+        }
+    }
+
+    fn name(self) -> &'static str {
+        match self {
+            Self::TangentTurned => "unfinished-tangent",
+            Self::Newton => "unfinished-newton",
+            Self::StepLimit => "unfinished-steps",
+            Self::Other => "unfinished-other",
+        }
+    }
+}
+
+impl LineEnd {
+    fn name(self) -> &'static str {
+        match self {
+            Self::Tip => "tip",
+            Self::Range => "range",
+            Self::Unfinished(u) => u.name(),
+        }
+    }
+
+    fn parse(s: &str) -> Option<Self> {
+        Some(match s {
+            "tip" => Self::Tip,
+            "range" => Self::Range,
+            "unfinished-tangent" => Self::Unfinished(Unfinished::TangentTurned),
+            "unfinished-newton" => Self::Unfinished(Unfinished::Newton),
+            "unfinished-steps" => Self::Unfinished(Unfinished::StepLimit),
+            "unfinished-other" => Self::Unfinished(Unfinished::Other),
+            _ => return None,
+        })
+    }
+}
+
+/// One cusp curve of one pop-out.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CuspLine {
     /// The pop-out (0 for the first of the pull).
     pub pop_out: usize,
     /// The parameter held fixed.
     pub fixed: Fixed,
-    /// The cusps, ordered by the free parameter (A/B or ν) increasing.
+    /// The cusps in the order continuation traced them (a polyline), the
+    /// free parameter (A/B or ν) increasing from the first to the last
+    /// ([`PhaseDiagram::new`] reverses a line given the other way). Where
+    /// the free parameter turns back (at a swallowtail, where the cusp
+    /// curve has a cusp of its own) the line covers some A/B twice or
+    /// more.
     pub points: Vec<CuspAt>,
+    /// How the line ends at its first and at its last point.
+    pub ends: [LineEnd; 2],
 }
 
 /// The cusp curves of a spring's pop-outs (n coils, C by the Nikolai
@@ -48,10 +138,15 @@ pub struct CuspLine {
 /// ln(A/B) along each line, then linearly in ν between the two lines of
 /// the nearest ν on either side.
 ///
-/// Outside the lines' range the nearest line end is taken (the limits
-/// A/B → ∞ and ν → −1 converge: the docs give how far the end values are
-/// from those limits); below the smallest A/B of a line (where it reaches
-/// θ0 = 90°) the pop-out does not exist.
+/// Beyond a line's ends its [`LineEnd`] decides: beyond a [`LineEnd::Tip`]
+/// (where the line reaches θ0 = 90°) the pop-out does not exist; beyond a
+/// [`LineEnd::Range`] the end value is taken (the limits A/B → ∞ and
+/// ν → −1 converge: the docs give how far the end values are from those
+/// limits); beyond a [`LineEnd::Unfinished`] θ0_c is not known. Where a
+/// line covers an A/B more than once (it turns back in A/B at
+/// swallowtails of the cusp curve), θ0_c is known only to lie between its
+/// values there: scenes between them are not mapped
+/// ([`PhaseDiagram::cusp_theta0`], [`Error::NotMapped`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct PhaseDiagram {
     coils: u32,
@@ -59,14 +154,22 @@ pub struct PhaseDiagram {
 }
 
 impl PhaseDiagram {
-    /// A diagram of a spring of `coils` coils from its cusp lines.
+    /// A diagram of a spring of `coils` coils from its cusp lines; a line
+    /// whose free parameter ends lower than it starts is reversed (points
+    /// and ends), repeated points are dropped.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] if a line at fixed ν is not monotone in
-    /// A/B (then θ0_c is not a function of A/B and this reading does not
-    /// apply) or has a point outside θ0 ∈ (0, π/2], A/B > 0, ν ∈ (−1, ½].
+    /// [`Error::InvalidArgument`] if a line has no point or a point outside
+    /// θ0 ∈ (0, π/2], A/B > 0, ν ∈ (−1, ½].
     pub fn new(coils: u32, mut lines: Vec<CuspLine>) -> Result<Self> {
         for line in &mut lines {
+            if line.points.is_empty() {
+                return Err(Error::InvalidArgument {
+                    name: "cusp line points",
+                    value: 0.0,
+                    allowed: "at least one cusp per line",
+                });
+            }
             for p in &line.points {
                 if !(p.theta0 > 0.0
                     && p.theta0 <= core::f64::consts::FRAC_PI_2 + 1e-12
@@ -81,22 +184,13 @@ impl PhaseDiagram {
                     });
                 }
             }
-            let key = |p: &CuspAt| match line.fixed {
-                Fixed::Nu(_) => p.a_over_b,
-                Fixed::AOverB(_) => p.nu,
-            };
-            line.points.sort_by(|a, b| key(a).total_cmp(&key(b)));
-            line.points.dedup_by(|a, b| key(a) == key(b));
-            if let Fixed::Nu(_) = line.fixed {
-                let rising = line.points.windows(2).all(|w| w[1].theta0 <= w[0].theta0);
-                if !rising {
-                    return Err(Error::InvalidArgument {
-                        name: "cusp line at fixed ν",
-                        value: line.points.first().map_or(f64::NAN, |p| p.nu),
-                        allowed: "θ0_c decreasing as A/B increases along the line",
-                    });
-                }
+            let fixed = line.fixed;
+            let (first, last) = (line.points[0], line.points[line.points.len() - 1]);
+            if key(fixed, &first) > key(fixed, &last) {
+                line.points.reverse();
+                line.ends.reverse();
             }
+            line.points.dedup();
         }
         Ok(Self { coils, lines })
     }
@@ -113,44 +207,72 @@ impl PhaseDiagram {
         &self.lines
     }
 
-    /// The number of pop-outs.
+    /// Whether the lines map every loop but the last: a pop-out count of
+    /// n − 1, as the reference spring of n = 2, 3, 4, 6 has. The lines are
+    /// traced from the pop-outs of one reference spring
+    /// (`examples/phase_diagram`: θ0 = 89.8°, A/B = 10, ν = 0.05); where it
+    /// has fewer (n = 8: 3 of 7 loops pop out there, the others unloop
+    /// without a fold), other loops can pop out at other scenes (pulls of
+    /// n = 8 find up to 6), and [`Self::pop_outs`] is a lower bound.
+    #[must_use]
+    pub fn is_complete(&self) -> bool {
+        self.pop_out_count() + 1 >= self.coils as usize
+    }
+
+    /// The number of pop-outs mapped (lines traced).
     #[must_use]
     pub fn pop_out_count(&self) -> usize {
         self.lines.iter().map(|l| l.pop_out + 1).max().unwrap_or(0)
     }
 
     /// θ0_c of pop-out `i` at (A/B, ν) read off the lines at fixed ν (type
-    /// docs); π/2 where the pop-out does not exist at any θ0 < 90°.
+    /// docs): a single value (start = end) where the lines know it, the
+    /// range it lies in where they do not (0 to π/2 beyond an unfinished
+    /// line); π/2 where the pop-out does not exist at any θ0 < 90°.
     #[must_use]
-    pub fn cusp_theta0(&self, i: usize, a_over_b: f64, nu: f64) -> f64 {
-        let mut at: Vec<(f64, f64)> = self
+    pub fn cusp_theta0(&self, i: usize, a_over_b: f64, nu: f64) -> RangeInclusive<f64> {
+        self.bounds(i, a_over_b, nu).0
+    }
+
+    /// [`Self::cusp_theta0`] and, where it is a range, why.
+    fn bounds(&self, i: usize, a_over_b: f64, nu: f64) -> (RangeInclusive<f64>, &'static str) {
+        let mut at: Vec<(f64, Bounds)> = self
             .lines
             .iter()
             .filter(|l| l.pop_out == i)
             .filter_map(|l| match l.fixed {
-                Fixed::Nu(v) => Some((v, along(&l.points, a_over_b))),
+                Fixed::Nu(v) => Some((v, along(l, a_over_b))),
                 Fixed::AOverB(_) => None,
             })
             .collect();
         at.sort_by(|a, b| a.0.total_cmp(&b.0));
         let half_pi = core::f64::consts::FRAC_PI_2;
-        match at.iter().position(|(v, _)| *v >= nu) {
-            None => at.last().map_or(half_pi, |a| a.1),
+        let b = match at.iter().position(|(v, _)| *v >= nu) {
+            None => at.last().map_or(Bounds::exact(half_pi), |a| a.1),
             Some(0) => at[0].1,
             Some(k) => {
-                let ((v0, t0), (v1, t1)) = (at[k - 1], at[k]);
+                let ((v0, b0), (v1, b1)) = (at[k - 1], at[k]);
                 let t = (nu - v0) / (v1 - v0);
-                t0 + t * (t1 - t0)
+                Bounds {
+                    lo: b0.lo + t * (b1.lo - b0.lo),
+                    hi: b0.hi + t * (b1.hi - b0.hi),
+                    why: b0.why.or(b1.why),
+                }
             }
-        }
+        };
+        (b.lo..=b.hi, b.why.unwrap_or(""))
     }
 
     /// The number of pop-outs of the spring (θ0, A/B, ν): how many cusp
-    /// curves θ0 lies above (type docs).
+    /// curves θ0 lies above (type docs). Of an incomplete diagram
+    /// ([`Self::is_complete`]) it counts the mapped pop-outs only: a lower
+    /// bound.
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] unless θ0 ∈ (0, π/2), A/B > 0 finite and
-    /// ν ∈ (−1, ½).
+    /// ν ∈ (−1, ½); [`Error::NotMapped`] where θ0 lies within the range of
+    /// a pop-out's θ0_c that the diagram does not resolve
+    /// ([`Self::cusp_theta0`]).
     pub fn pop_outs(&self, theta0: f64, a_over_b: f64, nu: f64) -> Result<usize> {
         if !(theta0 > 0.0 && theta0 < core::f64::consts::FRAC_PI_2) {
             return Err(Error::InvalidArgument {
@@ -173,26 +295,42 @@ impl PhaseDiagram {
                 allowed: "a Poisson ratio in (−1, 0.5)",
             });
         }
-        Ok((0..self.pop_out_count())
-            .filter(|&i| theta0 > self.cusp_theta0(i, a_over_b, nu))
-            .count())
+        let mut count = 0;
+        for i in 0..self.pop_out_count() {
+            let (r, why) = self.bounds(i, a_over_b, nu);
+            if theta0 > *r.end() {
+                count += 1;
+            } else if theta0 > *r.start() {
+                return Err(Error::NotMapped {
+                    pop_out: i as u64,
+                    from_deg: r.start().to_degrees(),
+                    to_deg: r.end().to_degrees(),
+                    why,
+                });
+            }
+        }
+        Ok(count)
     }
 
-    /// The lines as CSV: `pop_out,fixed,theta0_deg,a_over_b,nu,force_scaled`
-    /// (`fixed` is `nu` or `a_over_b`), one row per cusp, lines in order;
-    /// numbers with 17 significant digits.
+    /// The lines as CSV:
+    /// `pop_out,fixed,theta0_deg,a_over_b,nu,force_scaled,ends` (`fixed` is
+    /// `nu` or `a_over_b`; `ends` the [`LineEnd`]s of the line's first and
+    /// last point, `tip`, `range` or `unfinished-<reason>`, as `first/last`),
+    /// one row per cusp, lines and points in order; numbers with 17
+    /// significant digits.
     #[must_use]
     pub fn to_csv(&self) -> String {
-        let mut out = String::from("pop_out,fixed,theta0_deg,a_over_b,nu,force_scaled\n");
+        let mut out = String::from("pop_out,fixed,theta0_deg,a_over_b,nu,force_scaled,ends\n");
         for l in &self.lines {
             let fixed = match l.fixed {
                 Fixed::Nu(_) => "nu",
                 Fixed::AOverB(_) => "a_over_b",
             };
+            let ends = format!("{}/{}", l.ends[0].name(), l.ends[1].name());
             for p in &l.points {
                 let _ = writeln!(
                     out,
-                    "{},{fixed},{:.16e},{:.16e},{:.16e},{:.16e}",
+                    "{},{fixed},{:.16e},{:.16e},{:.16e},{:.16e},{ends}",
                     l.pop_out,
                     p.theta0.to_degrees(),
                     p.a_over_b,
@@ -205,7 +343,12 @@ impl PhaseDiagram {
     }
 
     /// Reads [`PhaseDiagram::to_csv`]'s format back (a new line starts
-    /// where the pop-out, the fixed parameter or its value changes).
+    /// where the pop-out, the fixed parameter or its value changes). The
+    /// format without `ends` (the committed diagrams of n = 2, 3, 4, 6,
+    /// whose lines are complete) is read too: a line's first end is a
+    /// [`LineEnd::Tip`] if its first point is at 90° (to 1e-9 rad), so is
+    /// its last end for a line at fixed A/B, every other end a
+    /// [`LineEnd::Range`].
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] for a malformed row (its number is the
@@ -216,15 +359,25 @@ impl PhaseDiagram {
             let bad = || Error::InvalidArgument {
                 name: "phase diagram CSV row",
                 value: row as f64,
-                allowed: "pop_out,fixed (nu|a_over_b),theta0_deg,a_over_b,nu,force_scaled",
+                allowed: "pop_out,fixed (nu|a_over_b),theta0_deg,a_over_b,nu,force_scaled[,ends]",
             };
             if text.trim().is_empty() {
                 continue;
             }
             let f: Vec<&str> = text.split(',').collect();
-            if f.len() != 6 {
+            if f.len() != 6 && f.len() != 7 {
                 return Err(bad());
             }
+            let ends = match f.get(6) {
+                None => None,
+                Some(e) => {
+                    let (a, b) = e.trim().split_once('/').ok_or_else(bad)?;
+                    Some([
+                        LineEnd::parse(a).ok_or_else(bad)?,
+                        LineEnd::parse(b).ok_or_else(bad)?,
+                    ])
+                }
+            };
             let num = |s: &str| s.trim().parse::<f64>().map_err(|_| bad());
             let pop_out = f[0].trim().parse::<usize>().map_err(|_| bad())?;
             let p = CuspAt {
@@ -244,34 +397,99 @@ impl PhaseDiagram {
                     pop_out,
                     fixed,
                     points: vec![p],
+                    ends: ends.unwrap_or([LineEnd::Range; 2]),
                 }),
+            }
+            if ends.is_none() {
+                let l = lines.last_mut().expect("pushed");
+                let tip = |p: &CuspAt| p.theta0 >= core::f64::consts::FRAC_PI_2 - 1e-9;
+                l.ends[0] = if tip(&l.points[0]) {
+                    LineEnd::Tip
+                } else {
+                    LineEnd::Range
+                };
+                if let Fixed::AOverB(_) = l.fixed {
+                    l.ends[1] = if tip(&p) {
+                        LineEnd::Tip
+                    } else {
+                        LineEnd::Range
+                    };
+                }
             }
         }
         Self::new(coils, lines)
     }
 }
 
-/// θ0_c along a line at fixed ν (points by A/B increasing), linear in
-/// ln(A/B): π/2 below the line's first A/B if that end is at θ0 = 90°,
-/// the end values beyond its ends otherwise.
-fn along(points: &[CuspAt], a_over_b: f64) -> f64 {
+/// The free parameter of a line.
+fn key(fixed: Fixed, p: &CuspAt) -> f64 {
+    match fixed {
+        Fixed::Nu(_) => p.a_over_b,
+        Fixed::AOverB(_) => p.nu,
+    }
+}
+
+/// Where θ0_c lies, and why it is a range.
+#[derive(Debug, Clone, Copy)]
+struct Bounds {
+    lo: f64,
+    hi: f64,
+    why: Option<&'static str>,
+}
+
+impl Bounds {
+    fn exact(t: f64) -> Self {
+        Self {
+            lo: t,
+            hi: t,
+            why: None,
+        }
+    }
+}
+
+/// θ0_c along a line at fixed ν, linear in ln(A/B) on each segment of
+/// the polyline: beyond the ends as their [`LineEnd`]s say; where several
+/// segments cover the A/B (the line turns back at swallowtails), the range
+/// of their values.
+fn along(line: &CuspLine, a_over_b: f64) -> Bounds {
     let half_pi = core::f64::consts::FRAC_PI_2;
+    let points = &line.points;
+    let beyond = |end: LineEnd, p: &CuspAt| match end {
+        LineEnd::Tip => Bounds::exact(half_pi),
+        LineEnd::Range => Bounds::exact(p.theta0),
+        LineEnd::Unfinished(_) => Bounds {
+            lo: 0.0,
+            hi: half_pi,
+            why: Some("the continuation of its cusp line ended before this scene"),
+        },
+    };
     let (Some(first), Some(last)) = (points.first(), points.last()) else {
-        return half_pi;
+        return Bounds::exact(half_pi);
     };
     if a_over_b < first.a_over_b {
-        // the line ends at 90° (the region's tip) or at the computed range
-        return if first.theta0 >= half_pi - 1e-9 {
-            half_pi
-        } else {
-            first.theta0
-        };
+        return beyond(line.ends[0], first);
     }
-    if a_over_b >= last.a_over_b {
-        return last.theta0;
+    if a_over_b > last.a_over_b || points.len() == 1 {
+        return beyond(line.ends[1], last);
     }
-    let k = points.partition_point(|p| p.a_over_b <= a_over_b);
-    let (p0, p1) = (points[k - 1], points[k]);
-    let t = (a_over_b.ln() - p0.a_over_b.ln()) / (p1.a_over_b.ln() - p0.a_over_b.ln());
-    p0.theta0 + t * (p1.theta0 - p0.theta0)
+    let x = a_over_b.ln();
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for w in points.windows(2) {
+        let (x0, x1) = (w[0].a_over_b.ln(), w[1].a_over_b.ln());
+        if x < x0.min(x1) || x > x0.max(x1) {
+            continue;
+        }
+        let t = if x1 == x0 { 0.0 } else { (x - x0) / (x1 - x0) };
+        let v = w[0].theta0 + t * (w[1].theta0 - w[0].theta0);
+        lo = lo.min(v);
+        hi = hi.max(v);
+    }
+    // A/B is between the first and the last point, so some segment covers it.
+    Bounds {
+        lo,
+        hi,
+        why: (hi > lo).then_some(
+            "its cusp line turns back over this A/B (swallowtails of the cusp curve) and θ0 lies between its branches",
+        ),
+    }
 }
