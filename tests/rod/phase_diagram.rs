@@ -183,28 +183,40 @@ fn direct_pulls_see_the_pop_outs_the_diagram_predicts() {
     let d =
         PhaseDiagram::from_csv(4, include_str!("../../docs/data/phase_diagram_n4.csv")).unwrap();
     for (t, a, nu) in SCENES {
-        let predicted = d.pop_outs(t.to_radians(), a, nu).unwrap();
-        // the scene is away from every boundary: 0.1° either side agree
-        let (below, above) = (
-            d.pop_outs((t - 0.1).to_radians(), a, nu).unwrap(),
-            d.pop_outs((t + 0.1).to_radians(), a, nu).unwrap(),
-        );
-        assert!(
-            below == predicted && above == predicted,
-            "scene {t}, {a}, {nu} is near a boundary"
-        );
-        let spring = Spring::from_degrees(4, t, Stiffness::nikolai(a, nu).unwrap()).unwrap();
-        let pull = RodModel::default()
-            .intervals(24)
-            .pull(&spring, 3.0)
-            .unwrap();
-        assert!(pull.reached_target(), "{}", pull.termination());
+        let predicted = predicted_away_from_lines(&d, t, a, nu);
         assert_eq!(
-            pull.pop_outs().len(),
+            pulled_pop_outs(4, t, a, nu),
             predicted,
             "scene θ0 = {t}°, A/B = {a}, ν = {nu}"
         );
     }
+}
+
+/// The diagram's count at the scene, which must be 0.1° or more from
+/// every line (the counts 0.1° either side agree).
+fn predicted_away_from_lines(d: &PhaseDiagram, t: f64, a: f64, nu: f64) -> usize {
+    let predicted = d.pop_outs(t.to_radians(), a, nu).unwrap();
+    let (below, above) = (
+        d.pop_outs((t - 0.1).to_radians(), a, nu).unwrap(),
+        d.pop_outs((t + 0.1).to_radians(), a, nu).unwrap(),
+    );
+    assert!(
+        below == predicted && above == predicted,
+        "scene {t}, {a}, {nu} is near a boundary"
+    );
+    predicted
+}
+
+/// The pop-outs of a direct pull of the scene to F/((2πn)²B) = 3 on 24
+/// intervals.
+fn pulled_pop_outs(n: u32, t: f64, a: f64, nu: f64) -> usize {
+    let spring = Spring::from_degrees(n, t, Stiffness::nikolai(a, nu).unwrap()).unwrap();
+    let pull = RodModel::default()
+        .intervals(24)
+        .pull(&spring, 3.0)
+        .unwrap();
+    assert!(pull.reached_target(), "{}", pull.termination());
+    pull.pop_outs().len()
 }
 
 /// Scenes with 3, 2, 1 and 0 pop-outs on the line at ν = 0.05 and
@@ -240,22 +252,8 @@ fn direct_pulls_see_at_least_the_n8_pop_outs_the_diagram_predicts() {
     assert!(!d.is_complete());
     assert_eq!(d.pop_out_count(), 3);
     for (t, a, nu, exact) in SCENES_N8 {
-        let predicted = d.pop_outs(t.to_radians(), a, nu).unwrap();
-        let (below, above) = (
-            d.pop_outs((t - 0.1).to_radians(), a, nu).unwrap(),
-            d.pop_outs((t + 0.1).to_radians(), a, nu).unwrap(),
-        );
-        assert!(
-            below == predicted && above == predicted,
-            "scene {t}, {a}, {nu} is near a boundary"
-        );
-        let spring = Spring::from_degrees(8, t, Stiffness::nikolai(a, nu).unwrap()).unwrap();
-        let pull = RodModel::default()
-            .intervals(24)
-            .pull(&spring, 3.0)
-            .unwrap();
-        assert!(pull.reached_target(), "{}", pull.termination());
-        let seen = pull.pop_outs().len();
+        let predicted = predicted_away_from_lines(&d, t, a, nu);
+        let seen = pulled_pop_outs(8, t, a, nu);
         if exact {
             assert_eq!(seen, predicted, "scene θ0 = {t}°, A/B = {a}, ν = {nu}");
         } else {

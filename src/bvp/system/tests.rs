@@ -72,6 +72,25 @@ fn difference_jacobian<P: Problem + ?Sized>(
     (jm, size)
 }
 
+/// The residual at `x` and the Newton corrections for it by the condensed
+/// solve (with the factorisation's determinant) and by the sparse LU (the
+/// system is left on the sparse LU).
+fn condensed_and_sparse<P: Problem + ?Sized>(
+    sys: &mut System<'_, P>,
+    x: &State,
+) -> (Residual, (State, Det), State) {
+    let mut r = sys.zero_residual();
+    sys.residual(x, &mut r).unwrap();
+    let det = sys.factor(x).unwrap();
+    let mut a = sys.zero_state();
+    sys.solve(&r, &mut a).unwrap();
+    sys.linear = LinearSolver::SparseLu;
+    sys.factor(x).unwrap();
+    let mut b = sys.zero_state();
+    sys.solve(&r, &mut b).unwrap();
+    (r, (a, det), b)
+}
+
 /// The condensed solve and faer's sparse LU on the full system give the
 /// same Newton correction at an arbitrary (non-solution) state, with a
 /// free parameter, an integral row and a border row.
@@ -106,15 +125,7 @@ fn condensed_matches_sparse() {
             sys.border.coef_q[1] = -0.25;
             sys.border.target[0] = 0.3;
         }
-        let mut r = sys.zero_residual();
-        sys.residual(&x, &mut r).unwrap();
-        sys.factor(&x).unwrap();
-        let mut a = sys.zero_state();
-        sys.solve(&r, &mut a).unwrap();
-        sys.linear = LinearSolver::SparseLu;
-        sys.factor(&x).unwrap();
-        let mut b = sys.zero_state();
-        sys.solve(&r, &mut b).unwrap();
+        let (r, (a, _), b) = condensed_and_sparse(&mut sys, &x);
         // Third reference: dense FD Jacobian of the residual.
         let (mut jm, size) = difference_jacobian(&mut sys, &x, if full { 2 } else { 0 });
         let mut rhs: Vec<f64> = flat(&r).iter().map(|v| -v).collect();
@@ -367,16 +378,8 @@ fn split_block_matches_sparse_and_dense() {
             *v = 0.01 * (i as f64 + 1.0);
         }
         sys.border.coef_q[0] = 0.5;
-        let mut r = sys.zero_residual();
-        sys.residual(&x, &mut r).unwrap();
-        let det = sys.factor(&x).unwrap();
+        let (_, (a, det), b) = condensed_and_sparse(&mut sys, &x);
         assert!(sys.split.iter().all(|s| *s == [4, 2]), "{:?}", sys.split);
-        let mut a = sys.zero_state();
-        sys.solve(&r, &mut a).unwrap();
-        sys.linear = LinearSolver::SparseLu;
-        sys.factor(&x).unwrap();
-        let mut b = sys.zero_state();
-        sys.solve(&r, &mut b).unwrap();
         for (u, v) in
             a.y.iter()
                 .chain(&a.k)
