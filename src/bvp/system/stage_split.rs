@@ -39,9 +39,6 @@ use crate::linalg::{
     Breakdown, DenseWorkspace, Det, apply_lower, lu_panel, lu_solve_block, lu_solve_vec,
     solve_upper,
 };
-use faer::linalg::matmul::matmul;
-use faer::reborrow::ReborrowMut;
-use faer::{Accum, MatMut, MatRef, Par};
 
 /// The components of one interval in the order core, constants,
 /// quadratures, with the two first counts.
@@ -110,7 +107,7 @@ pub(super) fn classify(row_nz: &[bool], col_nz: &[bool], comps: &mut [usize]) ->
 /// overwrites the right-hand sides that follow it in `wa` (columns of
 /// length m n) with W_j⁻¹ times them; the core's columns are solved
 /// together, on W_cc's factorisation (faer's blocked solve). `scratch`
-/// holds at least m n times the columns of `wa`, `piv` and `pinv` m n.
+/// holds at least m n (1 + the columns of `wa`), `piv` and `pinv` m n.
 /// Returns det W_j.
 pub(super) fn pack_and_solve(
     wa: &mut [f64],
@@ -182,31 +179,10 @@ pub(super) fn pack_and_solve(
         )
     }?;
     let (lu, solved) = block.split_at(mc * mc);
-    // X_r = B_r − W_rc X_c − W_rf B_f for all right-hand sides at once
-    if mr > 0 {
-        let (xr, rest) = rest.split_at_mut(mr * ncols);
-        let xf = &mut rest[..mf * ncols];
-        for (col, b) in rhs.chunks_exact(mn).enumerate() {
-            for k in 0..m {
-                for (a, &i) in quadratures.iter().enumerate() {
-                    xr[col * mr + k * nr + a] = b[k * n + i];
-                }
-                for (a, &i) in constants.iter().enumerate() {
-                    xf[col * mf + k * split.constants + a] = b[k * n + i];
-                }
-            }
-        }
-        subtract_coupling(wr, (solved, &*xf), xr, ncols);
-        for (col, b) in rhs.chunks_exact_mut(mn).enumerate() {
-            for k in 0..m {
-                for (a, &i) in quadratures.iter().enumerate() {
-                    b[k * n + i] = xr[col * mr + k * nr + a];
-                }
-            }
-        }
-    }
+    let xr = &mut rest[mr * (mc + mf)..];
     for (col, b) in rhs.chunks_exact_mut(mn).enumerate() {
         scatter_core(&solved[col * mc..(col + 1) * mc], split, b);
+        solve_quadratures(b, split, wr, xr);
     }
     let packed = [lu, &*wcf, &*wr];
     let mut at = 0;
@@ -319,31 +295,4 @@ pub(super) fn solve(
     }
     scatter_core(xc, split, x);
     solve_quadratures(x, split, wr, xr);
-}
-
-/// `xr` −= W_rc X_c + W_rf X_f for `cols` right-hand sides at once, by
-/// faer's product (column-major, m n_r, m n_c and m n_f rows;
-/// `wr` = [W_rc W_rf]). For one vector [`solve_quadratures`]'s loop is
-/// faster (measured on the rod).
-fn subtract_coupling(wr: &[f64], (xc, xf): (&[f64], &[f64]), xr: &mut [f64], cols: usize) {
-    let mr = xr.len() / cols;
-    let (mc, mf) = (xc.len() / cols, xf.len() / cols);
-    let (wrc, wrf) = wr.split_at(mr * mc);
-    let mut dst = MatMut::from_column_major_slice_mut(xr, mr, cols);
-    matmul(
-        dst.rb_mut(),
-        Accum::Add,
-        MatRef::from_column_major_slice(wrc, mr, mc),
-        MatRef::from_column_major_slice(xc, mc, cols),
-        -1.0,
-        Par::Seq,
-    );
-    matmul(
-        dst.rb_mut(),
-        Accum::Add,
-        MatRef::from_column_major_slice(&wrf[..mr * mf], mr, mf),
-        MatRef::from_column_major_slice(xf, mf, cols),
-        -1.0,
-        Par::Seq,
-    );
 }
