@@ -4,7 +4,7 @@
 
 use std::time::Duration;
 
-use super::{Jump, PopOut, Response, Shape};
+use super::{Jump, LoadedShape, PopOut, Response};
 
 /// The value of an [`Answer`], one variant per
 /// [`Question`](super::Question).
@@ -31,8 +31,8 @@ pub enum Value {
         /// [`Response::jumps`] under force control.
         jumps: Vec<Jump>,
     },
-    /// The equilibrium at the load and its loop count ([`Shape`]).
-    Shape(Box<Shape>),
+    /// The equilibrium at the load and its loop count ([`LoadedShape`]).
+    Shape(Box<LoadedShape>),
 }
 
 /// The model that answered.
@@ -144,7 +144,7 @@ pub enum Reason {
     /// Neither cheap model can be certified at the tolerance: the rod
     /// answered, the cheapest rod that meets it: for a curve, run at half
     /// the tolerance asked (its estimate is reported doubled); for a shape,
-    /// run at the tolerance and its last point refined ([`Shape`]).
+    /// run at the tolerance and its last point refined ([`LoadedShape`]).
     RodNeeded {
         /// Why not the exact helix.
         helix: SetAside,
@@ -165,7 +165,7 @@ pub enum Reason {
 /// curve ([`crate::rod::PullRun::estimate`]); for the spring constant, a
 /// relative error; for a shape, the largest distance between its
 /// centreline and the exact one (units of the rod's length, up to a turn
-/// about the force line: [`Shape`]).
+/// about the force line: [`LoadedShape`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Answer {
     pub(super) value: Value,

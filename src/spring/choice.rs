@@ -10,7 +10,7 @@
 //! | anything else | exact helix | never certified: loaded on its axis, it leaves the rest state with another slope (k_rod/k_helix from 0.41 for a slinky to 0.65 for n = 6, θ0 = 89.9°, A/B = 20) |
 //! | anything else | flat elastica | never certified: it passes ≥ 0.4 cos θ0 from the rest state, ignores pitch, A, C and pop-outs, and no bound on its error is known without the rod |
 //! | shape at one load | exact helix | never: about the force line its ends are its radius R off the spring's ([`SetAside::MissesTheEnds`](super::SetAside::MissesTheEnds)), and no bound on its interior is known |
-//! | shape at one load | rod at the tolerance, its last point solved again on halved meshes until the centrelines agree to the tolerance | always ([`Shape`](super::Shape)) |
+//! | shape at one load | rod at the tolerance, its last point solved again on halved meshes until the centrelines agree to the tolerance | always ([`LoadedShape`](super::LoadedShape)) |
 //! | anything else | rod at half the tolerance asked | always: twice its own estimate ([`crate::rod::PullRun::estimate`]) |
 //!
 //! The rod pulls only as far as the question needs: to the largest load or
@@ -63,7 +63,7 @@ impl Spring {
     /// The tolerance is in the plane (Δz, F/((2πn)²B)) of the paper's
     /// plots (max norm), as for [`RodModel::tolerance`]; for the spring
     /// constant it is relative; for a shape it is the largest distance
-    /// between centrelines, in units of the rod's length ([`Shape`](super::Shape)).
+    /// between centrelines, in units of the rod's length ([`LoadedShape`](super::LoadedShape)).
     ///
     /// ```no_run
     /// use hockle::spring::{Choice, Question, Spring};

@@ -21,7 +21,7 @@
 //!
 //! Or the spring chooses: [`Spring::answer`] answers a [`Question`] (a
 //! curve, forces or extensions, the spring constant, the pop-outs, the
-//! [`Shape`] at one load and its loop count) at a tolerance with the
+//! [`LoadedShape`] at one load and its loop count) at a tolerance with the
 //! cheapest model that can be shown to meet it, and says why ([`Answer`]).
 //!
 //! ```
@@ -54,7 +54,7 @@ pub use question::Question;
 pub use response::{BranchMatch, Direction, Jump, PopOut, Response, Stretch};
 pub use rod_model::RodModel;
 pub use scene::Spring;
-pub use shape::Shape;
+pub use shape::LoadedShape;
 pub use sweep::{sweep, sweep_serial};
 
 use crate::error::{Error, Result};

@@ -55,12 +55,12 @@ use super::{HelixModel, Model, RodModel, Spring};
 /// # Ok::<(), hockle::Error>(())
 /// ```
 #[derive(Debug, Clone)]
-pub struct Shape {
+pub struct LoadedShape {
     equilibrium: Equilibrium,
     loops: Option<u32>,
 }
 
-impl Shape {
+impl LoadedShape {
     /// The equilibrium (the rod's collocation solution at the load).
     #[must_use]
     pub fn equilibrium(&self) -> &Equilibrium {
@@ -97,7 +97,7 @@ impl Shape {
     }
 }
 
-impl PartialEq for Shape {
+impl PartialEq for LoadedShape {
     /// The same rod, mesh, parameters and collocation values.
     fn eq(&self, other: &Self) -> bool {
         let (a, b) = (self.equilibrium.solution(), other.equilibrium.solution());
@@ -176,7 +176,7 @@ impl Spring {
         let equilibrium = Equilibrium::new(rod, solution)?;
         let loops = equilibrium.loops();
         Ok(Answer {
-            value: Value::Shape(Box::new(Shape { equilibrium, loops })),
+            value: Value::Shape(Box::new(LoadedShape { equilibrium, loops })),
             estimated_error,
             tolerance,
             choice: Choice::Rod {

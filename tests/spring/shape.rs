@@ -11,7 +11,7 @@
 //! rod's equilibria are defined up to one).
 
 use hockle::Stiffness;
-use hockle::spring::{Choice, Question, Reason, SetAside, Shape, Spring, Target, Value};
+use hockle::spring::{Choice, LoadedShape, Question, Reason, SetAside, Spring, Target, Value};
 
 use crate::measure::{
     SAMPLES, SHAPE_REFERENCE_CONVERGED, SHAPE_REFERENCE_INTERVALS_PER_COIL, centreline,
@@ -22,7 +22,7 @@ fn spring(n: u32, theta0_deg: f64, a_over_b: f64, nu: f64) -> Spring {
     Spring::from_degrees(n, theta0_deg, Stiffness::nikolai(a_over_b, nu).unwrap()).unwrap()
 }
 
-fn shape_of(answer: &hockle::spring::Answer) -> &Shape {
+fn shape_of(answer: &hockle::spring::Answer) -> &LoadedShape {
     let Value::Shape(shape) = answer.value() else {
         panic!("a shape question answered without a shape: {answer}");
     };
