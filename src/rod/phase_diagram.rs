@@ -16,7 +16,8 @@ pub struct CuspAt {
     pub a_over_b: f64,
     /// Poisson ratio ν.
     pub nu: f64,
-    /// The force of the meeting folds, F/((2πn)²B).
+    /// The force of the meeting folds, F/((2πn)²B) (NaN where it was not
+    /// recorded: the tips of the committed n = 2, 3, 4, 6 lines).
     pub force_scaled: f64,
 }
 
@@ -159,8 +160,9 @@ impl PhaseDiagram {
     /// and ends), repeated points are dropped.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] if a line has no point or a point outside
-    /// θ0 ∈ (0, π/2], A/B > 0, ν ∈ (−1, ½].
+    /// [`Error::InvalidArgument`] if a line has no point, a point outside
+    /// θ0 ∈ (0, π/2], A/B > 0, ν ∈ (−1, ½], or a pop-out index of `coils`
+    /// or more.
     pub fn new(coils: u32, mut lines: Vec<CuspLine>) -> Result<Self> {
         for line in &mut lines {
             if line.points.is_empty() {
@@ -168,6 +170,16 @@ impl PhaseDiagram {
                     name: "cusp line points",
                     value: 0.0,
                     allowed: "at least one cusp per line",
+                });
+            }
+            // (a spring of n coils loses at most n − 1 loops: its pop-outs
+            // are numbered 0 … n − 2; a larger index is not a diagram's and
+            // would make every reading loop over it)
+            if line.pop_out >= coils as usize {
+                return Err(Error::InvalidArgument {
+                    name: "cusp line pop-out",
+                    value: line.pop_out as f64,
+                    allowed: "pop-out indices below the number of coils",
                 });
             }
             for p in &line.points {

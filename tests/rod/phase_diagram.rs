@@ -118,6 +118,20 @@ fn a_diagram_counts_the_curves_below_a_scene() {
     assert_eq!(PhaseDiagram::from_csv(4, &old).unwrap(), d);
     assert!(PhaseDiagram::from_csv(4, "header\n0,nu,1,2\n").is_err());
     assert!(PhaseDiagram::from_csv(4, "header\n0,nu,80,2,0,0.5,tip/nowhere\n").is_err());
+    // a pop-out index a 4-coil spring cannot have (a reading loops over
+    // every index below the largest)
+    for bad in [
+        "header\n4,nu,80,2,0,0.5\n",
+        "header\n18446744073709551615,nu,80,2,0,0.5\n",
+    ] {
+        assert!(
+            matches!(
+                PhaseDiagram::from_csv(4, bad),
+                Err(Error::InvalidArgument { .. })
+            ),
+            "{bad}"
+        );
+    }
     let mut empty = line(0, 0.0, &[(80.0, 2.0)]);
     empty.points.clear();
     assert!(PhaseDiagram::new(4, vec![empty]).is_err());
