@@ -577,7 +577,12 @@ impl Pull {
                 // control grows it)
                 match solver.solve(&rod, &rest, &p1) {
                     Ok(near) => cont.distance(&rest, &near)?,
-                    Err(_) => FALLBACK_STEP,
+                    Err(
+                        Error::NewtonDiverged { .. }
+                        | Error::NewtonNotConverged { .. }
+                        | Error::SingularJacobian { .. },
+                    ) => FALLBACK_STEP,
+                    Err(e) => return Err(e),
                 }
                 .clamp(self.ds_min, self.ds_max)
             }

@@ -179,7 +179,7 @@ pub(super) fn pack_and_solve(
         )
     }?;
     let (lu, solved) = block.split_at(mc * mc);
-    let xr = &mut rest[mr * (mc + mf)..];
+    let xr = &mut rest[..mr];
     for (col, b) in rhs.chunks_exact_mut(mn).enumerate() {
         scatter_core(&solved[col * mc..(col + 1) * mc], split, b);
         solve_quadratures(b, split, wr, xr);
