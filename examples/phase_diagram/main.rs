@@ -18,6 +18,13 @@
 //! 100) and in ν (at A/B = 10): `phase_diagram_n<N>.csv` and `.svg` in the
 //! output folder (default `$CARGO_TARGET_DIR/hockle`, else `target/hockle`).
 //!
+//! `--pull F` pulls each `--scene` too (the adaptive default rod, from rest
+//! to F/((2πn)²B) = F) and prints, after its line, one line
+//! `pulled pop_outs=<count> to=<F> reached=<bool> max_forces=<f1;f2;…>`
+//! with each pop-out's maximum force: a cross-check of the diagram, which
+//! counts the pop-outs that exist at any force (docs/ACCURACY.md: at
+//! negative ν the maximum-force folds rise far above the reference's).
+//!
 //! `--scene THETA0_DEG,A_OVER_B,NU` (repeatable) prints one line per scene,
 //! `scene theta0=<deg> a_over_b=<x> nu=<x> pop_outs=<count>`, read off the
 //! diagram ([`hockle::rod::PhaseDiagram::pop_outs`]), not from a pull;
@@ -38,6 +45,7 @@ use hockle::rod::{
     CuspAt, CuspLine, CuspSearch, Fixed, Followed, LineEnd, NikolaiRod, PhaseDiagram, Rod,
     Unfinished,
 };
+use hockle::spring::{Model, RodModel, Spring};
 
 /// The committed diagram of n = 4.
 const N4: &str = include_str!("../../docs/data/phase_diagram_n4.csv");
@@ -58,7 +66,7 @@ const HALF_PI: f64 = core::f64::consts::FRAC_PI_2;
 const INTERVALS: usize = 24;
 
 fn usage() -> String {
-    "usage: phase_diagram [--coils N] [--out DIR] [--compute | --check] [--scene THETA0_DEG,A_OVER_B,NU]…".into()
+    "usage: phase_diagram [--coils N] [--out DIR] [--compute | --check] [--scene THETA0_DEG,A_OVER_B,NU]… [--pull F]".into()
 }
 
 fn at(p: &FoldPoint) -> CuspAt {
@@ -385,11 +393,21 @@ fn main() -> Result<(), Box<dyn Error + Send + Sync>> {
         )
         .join("hockle");
     let (mut coils, mut force, mut scenes) = (4_u32, false, Vec::new());
+    let mut pull_to: Option<f64> = None;
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
         match arg.as_str() {
             "--out" => out = PathBuf::from(args.next().ok_or("--out needs a directory")?),
             "--compute" => force = true,
+            "--pull" => {
+                let v = args.next().ok_or("--pull needs a force F/((2πn)²B)")?;
+                pull_to = Some(
+                    v.parse::<f64>()
+                        .ok()
+                        .filter(|f| *f > 0.0 && f.is_finite())
+                        .ok_or(format!("--pull {v}: a finite positive force F/((2πn)²B)"))?,
+                );
+            }
             "--check" => return check(coils),
             "--coils" => {
                 let v = args.next().ok_or("--coils needs a number")?;
@@ -483,6 +501,36 @@ fn main() -> Result<(), Box<dyn Error + Send + Sync>> {
             }
             Err(e) => return Err(e.into()),
         }
+        if let Some(to) = pull_to {
+            pull_scene(coils, (t, a, nu), to)?;
+        }
+    }
+    Ok(())
+}
+
+/// `--pull`: the scene pulled from rest to F/((2πn)²B) = `to`, its
+/// pop-outs and their maximum forces.
+fn pull_scene(
+    coils: u32,
+    (t, a, nu): (f64, f64, f64),
+    to: f64,
+) -> Result<(), Box<dyn Error + Send + Sync>> {
+    let spring = Spring::from_degrees(coils, t, Stiffness::nikolai(a, nu)?)?;
+    let response = RodModel::default().pull(&spring, to)?;
+    let scale = response.curve().scale();
+    let forces: Vec<String> = response
+        .pop_outs()
+        .iter()
+        .map(|p| format!("{:.4}", p.max.point.force_scaled(scale)))
+        .collect();
+    println!(
+        "pulled pop_outs={} to={to} reached={} max_forces={}",
+        forces.len(),
+        response.reached_target(),
+        forces.join(";")
+    );
+    if !response.reached_target() {
+        eprintln!("  {}", response.termination());
     }
     Ok(())
 }
