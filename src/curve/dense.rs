@@ -60,40 +60,52 @@ impl Curvature {
 /// accuracy, may be seen as none).
 const TURNING_SAMPLES: usize = 64;
 
-/// The polynomial x(τ) = Σ c_k τ^k (degree ≤ 5) of one axis on one segment.
+/// The polynomial x(τ) = Σ c_k τ^k (degree ≤ 5) of one axis on one segment,
+/// and its value at τ = 1: the next node's, exactly. (Σ c_k rounds a few
+/// ulps away from it, and a value between the two would be crossed by
+/// neither of the segments that meet there, or by both.)
 #[derive(Debug, Clone, Copy)]
-struct Segment([f64; 6]);
+struct Segment([f64; 6], f64);
 
 impl Segment {
     fn quintic(x: (f64, f64), v: (f64, f64), a: (f64, f64)) -> Self {
         let d = x.1 - x.0;
-        Segment([
-            x.0,
-            v.0,
-            0.5 * a.0,
-            10.0 * d - 6.0 * v.0 - 4.0 * v.1 - 0.5 * (3.0 * a.0 - a.1),
-            -15.0 * d + 8.0 * v.0 + 7.0 * v.1 + 0.5 * (3.0 * a.0 - 2.0 * a.1),
-            6.0 * d - 3.0 * v.0 - 3.0 * v.1 - 0.5 * (a.0 - a.1),
-        ])
+        Segment(
+            [
+                x.0,
+                v.0,
+                0.5 * a.0,
+                10.0 * d - 6.0 * v.0 - 4.0 * v.1 - 0.5 * (3.0 * a.0 - a.1),
+                -15.0 * d + 8.0 * v.0 + 7.0 * v.1 + 0.5 * (3.0 * a.0 - 2.0 * a.1),
+                6.0 * d - 3.0 * v.0 - 3.0 * v.1 - 0.5 * (a.0 - a.1),
+            ],
+            x.1,
+        )
     }
 
     fn cubic(x: (f64, f64), v: (f64, f64)) -> Self {
         let d = x.1 - x.0;
-        Segment([
-            x.0,
-            v.0,
-            3.0 * d - 2.0 * v.0 - v.1,
-            -2.0 * d + v.0 + v.1,
-            0.0,
-            0.0,
-        ])
+        Segment(
+            [
+                x.0,
+                v.0,
+                3.0 * d - 2.0 * v.0 - v.1,
+                -2.0 * d + v.0 + v.1,
+                0.0,
+                0.0,
+            ],
+            x.1,
+        )
     }
 
     fn linear(x0: f64, x1: f64) -> Self {
-        Segment([x0, x1 - x0, 0.0, 0.0, 0.0, 0.0])
+        Segment([x0, x1 - x0, 0.0, 0.0, 0.0, 0.0], x1)
     }
 
     fn at(&self, t: f64) -> f64 {
+        if t >= 1.0 {
+            return self.1;
+        }
         self.0.iter().rev().fold(0.0, |acc, c| acc * t + c)
     }
 
@@ -175,21 +187,30 @@ impl Segment {
     }
 }
 
-/// The root of `f` in [lo, hi] (f(lo) = `flo`, f(hi) of the other sign),
-/// by bisection to the last bit.
+/// The root of `f` in [lo, hi) (f(lo) = `flo`, f(hi) of the other sign),
+/// by bisection to the last bit. Never `hi` itself: a root there (f(hi) =
+/// 0) is the caller's to report, and a crossing between the last two
+/// floats below `hi` belongs to this interval, not to the one starting at
+/// `hi`.
 fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64, flo: f64) -> f64 {
+    let end = hi;
     for _ in 0..200 {
         let mid = 0.5 * (lo + hi);
         if mid <= lo || mid >= hi {
             break;
         }
-        if f(mid) * flo > 0.0 {
+        let fmid = f(mid);
+        if fmid == 0.0 {
+            return mid;
+        }
+        if fmid * flo > 0.0 {
             lo = mid;
         } else {
             hi = mid;
         }
     }
-    0.5 * (lo + hi)
+    let mid = 0.5 * (lo + hi);
+    if mid >= end { lo } else { mid }
 }
 
 impl ForceExtension {

@@ -49,6 +49,10 @@ const RETRY_DIVISOR: f64 = 10.0;
 /// The rod's smallest tolerance ([`crate::rod::Pull::tolerance`]).
 pub(super) const MIN_ROD_TOLERANCE: f64 = 1e-12;
 
+/// The rod's largest tolerance ([`crate::rod::Pull::tolerance`]), and so
+/// the largest of every answer the rod computes.
+const MAX_ROD_TOLERANCE: f64 = 1e-1;
+
 /// The elastica's lower bound is taken this much below the distance
 /// measured to its sampled curve (the chords of 400 samples over
 /// F/((2πn)²B) ≤ 2 cos θ0 are far closer than this).
@@ -78,7 +82,10 @@ impl Spring {
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] for a tolerance that is not finite and
-    /// positive (the rod also needs 1e-12 ≤ tol ≤ 1e-1) and for a bad
+    /// positive, or above 1e-1 (the rod's loosest) for any question but
+    /// the spring constant (a tolerance below the rod's tightest, 1e-12, is
+    /// answered at 1e-12 and reported as not met where its estimate says
+    /// so), and for a bad
     /// question ([`Question::check`], [`Question::target`]); the errors of
     /// [`Spring::spring_constant`] (a spring constant of a spring with
     /// custom intrinsic strains) and of [`RodModel`]'s pull. A pull that
@@ -106,6 +113,16 @@ impl Spring {
                 elapsed: clock.elapsed(),
             });
         };
+        if tolerance > MAX_ROD_TOLERANCE {
+            // (checked here, not by the rod, which is run at another
+            // tolerance and would name that one)
+            return Err(Error::InvalidArgument {
+                name: "tolerance",
+                value: tolerance,
+                allowed: "a finite, positive tolerance, at most 1e-1 (the rod's loosest) \
+                          for every question but the spring constant",
+            });
+        }
         if let Question::Shape { .. } = question {
             return self.answer_shape(target, tolerance, clock);
         }

@@ -31,6 +31,7 @@ mod continuation;
 mod curve;
 mod elastica;
 mod found;
+mod found_audit15;
 mod found_extremes;
 mod helix;
 mod hostile;

@@ -116,13 +116,25 @@ fn a_diagram_counts_the_curves_below_a_scene() {
         .map(|r| r.rsplit_once(',').unwrap().0.to_string() + "\n")
         .collect();
     assert_eq!(PhaseDiagram::from_csv(4, &old).unwrap(), d);
-    assert!(PhaseDiagram::from_csv(4, "header\n0,nu,1,2\n").is_err());
-    assert!(PhaseDiagram::from_csv(4, "header\n0,nu,80,2,0,0.5,tip/nowhere\n").is_err());
+    assert!(
+        PhaseDiagram::from_csv(
+            4,
+            "pop_out,fixed,theta0_deg,a_over_b,nu,force_scaled\n0,nu,1,2\n"
+        )
+        .is_err()
+    );
+    assert!(
+        PhaseDiagram::from_csv(
+            4,
+            "pop_out,fixed,theta0_deg,a_over_b,nu,force_scaled,ends\n0,nu,80,2,0,0.5,tip/nowhere\n"
+        )
+        .is_err()
+    );
     // a pop-out index a 4-coil spring cannot have (a reading loops over
     // every index below the largest)
     for bad in [
-        "header\n4,nu,80,2,0,0.5\n",
-        "header\n18446744073709551615,nu,80,2,0,0.5\n",
+        "pop_out,fixed,theta0_deg,a_over_b,nu,force_scaled\n4,nu,80,2,0,0.5\n",
+        "pop_out,fixed,theta0_deg,a_over_b,nu,force_scaled\n18446744073709551615,nu,80,2,0,0.5\n",
     ] {
         assert!(
             matches!(
