@@ -198,6 +198,7 @@ fn scenes(args: &[String]) -> Result<(), String> {
             answer.estimated_error(),
             answer.elapsed().as_secs_f64()
         );
+        stopped(&answer);
     }
     Ok(())
 }
@@ -239,7 +240,17 @@ fn shape_scene(
         loops(exact.as_ref().and_then(|e| e.loops())),
         answer.elapsed().as_secs_f64()
     );
+    stopped(&answer);
     Ok(())
+}
+
+/// Where an answer's pull stopped before its load, why (on stderr: the
+/// scene's line keeps its format, its `true=inf` or large estimate says
+/// it).
+fn stopped(answer: &hockle::spring::Answer) {
+    if let (false, Some(t)) = (answer.reached_target(), answer.termination()) {
+        eprintln!("models: the pull stopped before its target: {t}");
+    }
 }
 
 fn table() {

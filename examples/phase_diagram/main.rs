@@ -454,8 +454,10 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
                 committed.display()
             );
         }
+        // (the folder first: an --out that cannot be written fails now,
+        // not after the minutes of the computation)
+        std::fs::create_dir_all(&out).map_err(|e| format!("--out {}: {e}", out.display()))?;
         let d = compute(coils).map_err(|e| format!("computing the diagram of n = {coils}: {e}"))?;
-        std::fs::create_dir_all(&out)?;
         let csv = out.join(format!("phase_diagram_n{coils}.csv"));
         std::fs::write(&csv, d.to_csv())?;
         eprintln!("wrote {}", csv.display());

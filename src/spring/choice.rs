@@ -110,6 +110,7 @@ impl Spring {
                 choice: Choice::LinearResponse,
                 reason: Reason::ClosedForm,
                 reached: true,
+                termination: None,
                 elapsed: clock.elapsed(),
             });
         };
@@ -150,6 +151,7 @@ impl Spring {
         }
         let estimated_error = reported(&run);
         let reached = run.reached_target();
+        let termination = run.termination().clone();
         let response = RodModel::response(run)?;
         let pop_outs = response.pop_outs();
         let scale = self.force_scale();
@@ -186,6 +188,7 @@ impl Spring {
                 pop_outs: pop_outs.len(),
             },
             reached,
+            termination: Some(termination),
             elapsed: clock.elapsed(),
         })
     }

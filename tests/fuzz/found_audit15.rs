@@ -236,3 +236,36 @@ fn an_overflowing_force_target_says_why() {
     assert!(matches!(e, Error::UnreachableTarget { .. }), "{e:?}");
     assert!(e.to_string().contains("physical value"), "{e}");
 }
+
+/// Found asking for values near the straight rod: a pull that stopped
+/// before its target (here the step limit, pulling a 1-coil spring at
+/// θ0 = 30° to Δz = 1 − 10⁻⁷) answered the forces, extensions, pop-outs
+/// or shape it had, with `reached_target()` false, but said why only for a
+/// curve (in its `Response`): the rule is that a run that stops says why,
+/// typed. `Answer::termination()` now carries it for every question, and
+/// the answer's `Display` says it.
+#[test]
+fn an_answer_that_stops_early_says_why() {
+    use hockle::continuation::Termination;
+    let spring =
+        Spring::from_degrees(1, 30.0, hockle::Stiffness::nikolai(10.0, 0.05).unwrap()).unwrap();
+    let near_straight = 1.0 - 1e-7;
+    for q in [
+        Question::Shape {
+            at: Target::Extension(near_straight),
+        },
+        Question::ForcesAt(vec![0.9, near_straight]),
+    ] {
+        let a = spring.answer(&q, 1e-2).unwrap();
+        assert!(!a.reached_target(), "{q}: {a}");
+        let t = a.termination().expect("a pull's termination");
+        assert!(
+            matches!(t, Termination::MaxSteps(_) | Termination::Failed { .. }),
+            "{q}: {t:?}"
+        );
+        assert!(a.to_string().contains(&t.to_string()), "{q}: {a}");
+    }
+    // and a closed form has no pull
+    let k = spring.answer(&Question::SpringConstant, 1e-6).unwrap();
+    assert!(k.termination().is_none() && k.reached_target());
+}
