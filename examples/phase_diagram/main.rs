@@ -473,7 +473,7 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
             .filter(|l| matches!(l.fixed, Fixed::AOverB(_)))
         {
             for p in l.points.iter().filter(|p| p.theta0 < HALF_PI - 1e-5) {
-                let read = diagram.cusp_theta0(l.pop_out, p.a_over_b, p.nu);
+                let read = diagram.cusp_theta0(l.pop_out, p.a_over_b, p.nu)?;
                 if read.start() != read.end() {
                     continue; // not resolved there: counted below
                 }

@@ -259,9 +259,14 @@ impl PhaseDiagram {
     /// docs): a single value (start = end) where the lines know it, the
     /// range it lies in where they do not (0 to π/2 beyond an unfinished
     /// line); π/2 where the pop-out does not exist at any θ0 < 90°.
-    #[must_use]
-    pub fn cusp_theta0(&self, i: usize, a_over_b: f64, nu: f64) -> RangeInclusive<f64> {
-        self.bounds(i, a_over_b, nu).0
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] unless A/B > 0 finite and ν ∈ (−1, ½)
+    /// (outside them the reading was an empty range, ∞ to −∞, or the
+    /// nearest line's).
+    pub fn cusp_theta0(&self, i: usize, a_over_b: f64, nu: f64) -> Result<RangeInclusive<f64>> {
+        check_material(a_over_b, nu)?;
+        Ok(self.bounds(i, a_over_b, nu).0)
     }
 
     /// [`Self::cusp_theta0`] and, where it is a range, why.
@@ -311,20 +316,7 @@ impl PhaseDiagram {
                 allowed: "a helix angle in (0°, 90°)",
             });
         }
-        if !(a_over_b > 0.0 && a_over_b.is_finite()) {
-            return Err(Error::InvalidArgument {
-                name: "a_over_b",
-                value: a_over_b,
-                allowed: "a finite positive ratio A/B",
-            });
-        }
-        if !(nu > -1.0 && nu < 0.5) {
-            return Err(Error::InvalidArgument {
-                name: "nu",
-                value: nu,
-                allowed: "a Poisson ratio in (−1, 0.5)",
-            });
-        }
+        check_material(a_over_b, nu)?;
         // only the pop-outs that have lines (an index without one lies at
         // 90°, above every scene); not 0..pop_out_count(), which a
         // diagram of many coils with one line of a large index made a
@@ -477,6 +469,25 @@ impl PhaseDiagram {
         }
         Self::new(coils, lines)
     }
+}
+
+/// The A/B and ν a diagram is read at.
+fn check_material(a_over_b: f64, nu: f64) -> Result<()> {
+    if !(a_over_b > 0.0 && a_over_b.is_finite()) {
+        return Err(Error::InvalidArgument {
+            name: "a_over_b",
+            value: a_over_b,
+            allowed: "a finite positive ratio A/B",
+        });
+    }
+    if !(nu > -1.0 && nu < 0.5) {
+        return Err(Error::InvalidArgument {
+            name: "nu",
+            value: nu,
+            allowed: "a Poisson ratio in (−1, 0.5)",
+        });
+    }
+    Ok(())
 }
 
 /// The free parameter of a line.

@@ -269,3 +269,30 @@ fn an_answer_that_stops_early_says_why() {
     let k = spring.answer(&Question::SpringConstant, 1e-6).unwrap();
     assert!(k.termination().is_none() && k.reached_target());
 }
+
+/// Found with `PhaseDiagram::cusp_theta0`, the reading behind `pop_outs`,
+/// which took any A/B and ν: at A/B = NaN it answered the empty range ∞ to
+/// −∞, at ν = NaN or 7 the nearest line's value. It now refuses them as
+/// `pop_outs` does.
+#[test]
+fn reading_a_cusp_off_a_diagram_checks_its_scene() {
+    let d = PhaseDiagram::new(4, vec![one_line(0)]).unwrap();
+    for (a_over_b, nu) in [
+        (f64::NAN, 0.05),
+        (0.0, 0.05),
+        (f64::INFINITY, 0.05),
+        (10.0, f64::NAN),
+        (10.0, 7.0),
+        (10.0, -1.0),
+    ] {
+        let r = d.cusp_theta0(0, a_over_b, nu);
+        assert!(
+            matches!(r, Err(Error::InvalidArgument { .. })),
+            "{a_over_b} {nu}: {r:?}"
+        );
+    }
+    // halfway in ln A/B between 89.9° and 89° (to the rounding of ln and
+    // of degrees, ~1e-14°: 1e-12° is a hundred times that)
+    let r = d.cusp_theta0(0, 10.0, 0.05).unwrap();
+    assert!((r.start().to_degrees() - 89.45).abs() < 1e-12 && r.start() == r.end());
+}

@@ -162,7 +162,7 @@ fn a_diagram_says_where_it_does_not_know() {
     );
     let d = PhaseDiagram::new(4, vec![folded.clone()]).unwrap();
     let n = |t: f64, a| d.pop_outs(f64::to_radians(t), a, 0.0);
-    let r = d.cusp_theta0(0, 17.0, 0.0);
+    let r = d.cusp_theta0(0, 17.0, 0.0).unwrap();
     let (lo, hi) = (r.start().to_degrees(), r.end().to_degrees());
     // the three values to 1e-3° (printed to 3 decimals above)
     assert!(
@@ -176,7 +176,7 @@ fn a_diagram_says_where_it_does_not_know() {
         Err(Error::NotMapped { pop_out: 0, .. })
     ));
     // single-valued elsewhere, rising or falling
-    let r = d.cusp_theta0(0, 100.0, 0.0);
+    let r = d.cusp_theta0(0, 100.0, 0.0).unwrap();
     assert_eq!(r.start(), r.end());
     assert_eq!(n(85.5, 10.0).unwrap(), 0);
     // A line given the other way (A/B falling) is reversed, ends and all.
