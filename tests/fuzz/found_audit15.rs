@@ -296,3 +296,27 @@ fn reading_a_cusp_off_a_diagram_checks_its_scene() {
     let r = d.cusp_theta0(0, 10.0, 0.05).unwrap();
     assert!((r.start().to_degrees() - 89.45).abs() < 1e-12 && r.start() == r.end());
 }
+
+/// Found asking a spring with its own intrinsic strains (not its helix's,
+/// so its rest extension is not known before the rod relaxes) for the
+/// forces at one extension: refused as "rest extension = NaN: values all
+/// on one side of rest (all pulls or all pushes …)", which one value is.
+/// Now the refusal says what is missing, and how to ask instead.
+#[test]
+fn forces_at_extensions_of_a_spring_with_other_strains_say_why_not() {
+    let spring = Spring::paper()
+        .with_intrinsic_strains(hockle::nalgebra::Vector3::new(1.0, 20.0, 0.5))
+        .unwrap();
+    let r = spring.answer(&Question::ForcesAt(vec![0.5]), 1e-3);
+    match r {
+        Err(Error::InvalidArgument { allowed, .. }) => {
+            assert!(allowed.contains("force_at"), "{allowed}");
+        }
+        other => panic!("{other:?}"),
+    }
+    // the curve itself is answered (the rod takes any strains)
+    let a = spring
+        .answer(&Question::Curve { max_force: 0.2 }, 1e-2)
+        .unwrap();
+    assert!(a.reached_target(), "{a}");
+}
