@@ -320,3 +320,76 @@ fn forces_at_extensions_of_a_spring_with_other_strains_say_why_not() {
         .unwrap();
     assert!(a.reached_target(), "{a}");
 }
+
+/// The s-curve x = t/3, F = (t³ − 3t)·`scale` at t = −3, −2, …, 2 with its
+/// exact slopes (and curvatures): its Hermite interpolants are exact.
+fn s_curve(scale: ForceScale, curvatures: bool) -> ForceExtension {
+    let f = scale.value();
+    let mut c = ForceExtension::new("s-curve", "t", scale);
+    for i in 0..6 {
+        let t = f64::from(i) - 3.0;
+        let p = ForcePoint {
+            extension: t / 3.0,
+            force: (t * t * t - 3.0 * t) * f,
+            parameter: t,
+        };
+        let s = Slope {
+            extension: 1.0 / 3.0,
+            force: (3.0 * t * t - 3.0) * f,
+        };
+        if curvatures {
+            let k = Curvature {
+                extension: 0.0,
+                force: 6.0 * t * f,
+            };
+            c.push_with_curvature(p, s, k);
+        } else {
+            c.push_with_slope(p, s);
+        }
+    }
+    c
+}
+
+/// Found by the dense-output entries of the fuzz suite (`curve_entries`,
+/// added by audit15): (1) a crossing was decided by the sign of a product,
+/// which underflows to 0 for two tiny values: `force_at(5e-324)` next to
+/// the node Δz = 0 of a monotone stretch read two forces (the segment
+/// before the node, −1/3 … 0, "crossed" 5e-324); (2) a cubic segment's
+/// turning points came from a discriminant whose squares underflow for
+/// forces ~1e-221 (and overflow for ~1e200): `extension_at` missed two of
+/// three crossings; (3) Hermite coefficients of finite data near the
+/// largest double overflowed and every reading there was NaN.
+#[test]
+fn dense_output_at_the_ends_of_the_double_range() {
+    for curvatures in [false, true] {
+        let c = s_curve(ForceScale::new(84_889_682, 173.2).unwrap(), curvatures);
+        for x in [5e-324, -5e-324] {
+            assert_eq!(c.force_at(x).len(), 1, "{x:e}: {:?}", c.force_at(x));
+        }
+        // F = ½·scale: t³ − 3t = ½ three times in (−3, 2)
+        let tiny = ForceScale::new(3, 1e-222).unwrap();
+        let c = s_curve(tiny, curvatures);
+        let x = c.extension_at(0.5 * tiny.value());
+        assert_eq!(x.len(), 3, "{x:?}");
+    }
+    // forces of ±1e308 (their difference overflows) with slopes to match:
+    // finite data, no NaN reading
+    let mut c = ForceExtension::new("huge", "t", ForceScale::of_coils(1).unwrap());
+    for (t, f, df) in [(0.0, -1e308, 1.7e308), (1.0, 1e308, -1.7e308)] {
+        c.push_with_slope(
+            ForcePoint {
+                extension: t,
+                force: f,
+                parameter: t,
+            },
+            Slope {
+                extension: 1.0,
+                force: df,
+            },
+        );
+    }
+    let f = c.force_at(0.5);
+    assert!(f.len() == 1 && !f[0].is_nan(), "{f:?}");
+    let x = c.extension_at(0.0);
+    assert!(!x.is_empty() && x.iter().all(|v| v.is_finite()), "{x:?}");
+}
