@@ -127,8 +127,13 @@ impl Spring {
         if let Question::Shape { .. } = question {
             return self.answer_shape(target, tolerance, clock);
         }
-        let helix = self.helix_set_aside(target)?;
-        let elastica = self.elastica_set_aside(target, tolerance)?;
+        // (why the cheap models are set aside is said, not needed: where
+        // their own closed form or pull fails, e.g. a spring constant
+        // beyond the double range, the rod still answers)
+        let helix = self.helix_set_aside(target).unwrap_or(SetAside::NoBound);
+        let elastica = self
+            .elastica_set_aside(target, tolerance)
+            .unwrap_or(SetAside::NoBound);
 
         let pull = |tol: f64| -> Result<crate::rod::PullRun> {
             RodModel::default()

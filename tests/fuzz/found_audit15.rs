@@ -393,3 +393,55 @@ fn dense_output_at_the_ends_of_the_double_range() {
     let x = c.extension_at(0.0);
     assert!(!x.is_empty() && x.iter().all(|v| v.is_finite()), "{x:?}");
 }
+
+/// Found on `examples/models --scene 4,1e-200,10,0.05`: the curve of a
+/// spring whose Castigliano constant is beyond the double range (θ0 =
+/// 1e-200°: k ∝ 1/sin²θ0) was refused with that overflow, an error of the
+/// helix's set-aside reason, not of the rod, which answers it. The reason
+/// is now `NoBound` there.
+#[test]
+fn a_curve_is_answered_where_the_helix_reason_overflows() {
+    use hockle::spring::{Reason, SetAside};
+    let spring =
+        Spring::from_degrees(4, 1e-200, hockle::Stiffness::nikolai(10.0, 0.05).unwrap()).unwrap();
+    assert!(matches!(
+        spring.spring_constant(),
+        Err(Error::Overflow { .. })
+    ));
+    let a = spring
+        .answer(&Question::Curve { max_force: 0.5 }, 1e-2)
+        .unwrap();
+    assert!(a.reached_target() && a.meets_tolerance(), "{a}");
+    assert!(
+        matches!(
+            a.reason(),
+            Reason::RodNeeded {
+                helix: SetAside::NoBound,
+                ..
+            }
+        ),
+        "{a}"
+    );
+}
+
+/// Found with the models example at A/B = 1e-320: `Spring::spring_constant`
+/// scaled the compliance by the largest stiffness, so 0.5/(A/B) overflowed
+/// and the constant, about 2A(2πn/sin θ0)², a (subnormal) double, was
+/// `Overflow`. Now scaled by the smallest.
+#[test]
+fn the_spring_constant_of_a_vanishing_bending_stiffness() {
+    let (n, theta0) = (4_u32, 60.0_f64.to_radians());
+    let s = hockle::Stiffness::new(1e-320, 1.0, 0.8).unwrap();
+    let spring = Spring::new(n, theta0, s).unwrap();
+    let k = spring.spring_constant().unwrap();
+    // 1/k = R0² [1/(2A) + (3/2)(cos²θ0/B + sin²θ0/C)], R0 = sin θ0/(2πn):
+    // k = 2A (2πn/sin θ0)² / (1 + 3A(cos²θ0/B + sin²θ0/C)), the last
+    // term 1e-320 beside 1
+    let lever = 2.0 * core::f64::consts::PI * f64::from(n) / theta0.sin();
+    let want = 2.0 * s.a() * lever * lever;
+    // A = 1e-320 is subnormal: 2024 units of 5e-324, so A and k carry
+    // about 11 bits (relative 5e-4); 1e-3 is twice that
+    assert!((k / want - 1.0).abs() < 1e-3, "{k:e} vs {want:e}");
+    let a = spring.answer(&Question::SpringConstant, 1e-6).unwrap();
+    assert!(a.reached_target());
+}
