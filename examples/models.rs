@@ -133,9 +133,40 @@ fn scenes(args: &[String]) -> Result<(), String> {
             }
         }
     }
-    for (n, theta0, a_over_b, nu) in list {
-        let stiffness = Stiffness::nikolai(a_over_b, nu).map_err(|e| e.to_string())?;
-        let spring = Spring::from_degrees(n, theta0, stiffness).map_err(|e| e.to_string())?;
+    if list.is_empty() {
+        return Err(
+            "no --scene N,THETA0_DEG,A_OVER_B,NU given (or --trade, --on-demand, --shapes, \
+             --helix-data, --ends; no argument for the table)"
+                .into(),
+        );
+    }
+    // every scene and setting checked before the first (slow) answer
+    let mut springs = Vec::new();
+    for &(n, theta0, a_over_b, nu) in &list {
+        let bad = |e: hockle::Error| format!("--scene {n},{theta0},{a_over_b},{nu}: {e}");
+        let stiffness = Stiffness::nikolai(a_over_b, nu).map_err(bad)?;
+        let spring = Spring::from_degrees(n, theta0, stiffness).map_err(bad)?;
+        let question = match shape_at {
+            Some(force) => Question::Shape {
+                at: hockle::Target::Force(force),
+            },
+            None => Question::Curve { max_force },
+        };
+        let target = question
+            .target(spring.helix_angle().cos())
+            .map_err(|e| e.to_string())?
+            .ok_or("a question without a load")?;
+        // the rod's own checks (θ0 = 90° is a valid spring but no pull)
+        RodModel::default().driver(&spring, target).map_err(bad)?;
+        springs.push(spring);
+    }
+    // (`Spring::answer`'s range for every question the rod answers)
+    if !(tol > 0.0 && tol <= 0.1) {
+        return Err(format!(
+            "--tolerance {tol}: a tolerance in (0, 1e-1] (Δz and F/((2πn)²B))"
+        ));
+    }
+    for ((n, theta0, a_over_b, nu), spring) in list.into_iter().zip(springs) {
         if let Some(force) = shape_at {
             shape_scene(&spring, (n, theta0, a_over_b, nu), force, tol)?;
             continue;
@@ -146,16 +177,20 @@ fn scenes(args: &[String]) -> Result<(), String> {
         let Value::Curve(response) = answer.value() else {
             return Err("a curve question answered without a curve".into());
         };
+        // a reference that cannot be run (or stops early) gives true=inf
         let reference = RodModel::default()
             .tolerance(1e-8)
             .intervals(10 * n as usize)
             .points(7)
             .pull(&spring, max_force)
-            .map_err(|e| e.to_string())?;
-        let truth = if reference.reached_target() && answer.reached_target() {
-            measure::both_ways(&measure::drawn(response), &measure::drawn(&reference))
-        } else {
-            f64::INFINITY
+            .inspect_err(|e| eprintln!("models: no reference curve: {e}"))
+            .ok()
+            .filter(|r| r.reached_target());
+        let truth = match reference {
+            Some(reference) if answer.reached_target() => {
+                measure::both_ways(&measure::drawn(response), &measure::drawn(&reference))
+            }
+            _ => f64::INFINITY,
         };
         println!(
             "scene n={n} theta0={theta0} a_over_b={a_over_b} nu={nu} model={} estimated={:.3e} true={truth:.3e} seconds={:.3e}",
@@ -163,6 +198,7 @@ fn scenes(args: &[String]) -> Result<(), String> {
             answer.estimated_error(),
             answer.elapsed().as_secs_f64()
         );
+        stopped(&answer);
     }
     Ok(())
 }
@@ -183,21 +219,38 @@ fn shape_scene(
     let Value::Shape(shape) = answer.value() else {
         return Err("a shape question answered without a shape".into());
     };
-    let exact = measure::shape_reference(spring, at, measure::SHAPE_REFERENCE_INTERVALS_PER_COIL);
-    let truth = measure::distance_up_to_a_turn(
-        &measure::centreline(shape.equilibrium()),
-        &measure::centreline(&exact),
-    );
+    // a scene the converged reference cannot do prints true=inf and
+    // reference_loops=none (as a curve whose reference stops early)
+    let exact =
+        measure::try_shape_reference(spring, at, measure::SHAPE_REFERENCE_INTERVALS_PER_COIL)
+            .inspect_err(|e| eprintln!("models: no reference shape: {e}"))
+            .ok();
+    let truth = exact.as_ref().map_or(f64::INFINITY, |exact| {
+        measure::distance_up_to_a_turn(
+            &measure::centreline(shape.equilibrium()),
+            &measure::centreline(exact),
+        )
+    });
     let loops = |l: Option<u32>| l.map_or_else(|| "none".to_owned(), |l| l.to_string());
     println!(
         "scene n={n} theta0={theta0} a_over_b={a_over_b} nu={nu} shape_at={force} model={} estimated={:.3e} true={truth:.3e} loops={} reference_loops={} seconds={:.3e}",
         answer.choice().name(),
         answer.estimated_error(),
         loops(shape.loops()),
-        loops(exact.loops()),
+        loops(exact.as_ref().and_then(|e| e.loops())),
         answer.elapsed().as_secs_f64()
     );
+    stopped(&answer);
     Ok(())
+}
+
+/// Where an answer's pull stopped before its load, why (on stderr: the
+/// scene's line keeps its format, its `true=inf` or large estimate says
+/// it).
+fn stopped(answer: &hockle::spring::Answer) {
+    if let (false, Some(t)) = (answer.reached_target(), answer.termination()) {
+        eprintln!("models: the pull stopped before its target: {t}");
+    }
 }
 
 fn table() {

@@ -253,11 +253,13 @@ pub enum Error {
     },
     // ----- rod, spring ---------------------------------------------------
     /// A pull's target cannot be reached: a non-finite value, a force of 0
-    /// or an extension equal to the rest extension (the rest state itself),
-    /// or an extension outside (−1, 1) (|Δz| = 1 is the straight rod).
+    /// or one whose physical value f·(2πn)²B overflows, an extension equal
+    /// to the rest extension (the rest state itself), or an extension
+    /// outside (−1, 1) (|Δz| = 1 is the straight rod).
     #[error(
-        "the target {target} cannot be reached: forces must be finite and non-zero, \
-         extensions in (-1, 1) and different from the rest extension {rest_extension}"
+        "the target {target} cannot be reached: forces must be non-zero, with a finite \
+         physical value F = f·(2πn)²B, extensions in (-1, 1) and different from the rest \
+         extension {rest_extension}"
     )]
     UnreachableTarget {
         /// The target given.

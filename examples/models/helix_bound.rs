@@ -40,7 +40,15 @@ pub fn run(args: &[String]) -> Result<(), String> {
     while let Some(flag) = it.next() {
         let value = it.next().ok_or_else(|| format!("{flag} needs a value"))?;
         match flag.as_str() {
-            "--random" => count = value.parse().map_err(|_| format!("--random {value}"))?,
+            "--random" => {
+                // each scene pulls the rod (seconds): a larger count is a
+                // typo, and its list would not fit in memory
+                count = value
+                    .parse()
+                    .ok()
+                    .filter(|n| *n <= 100_000)
+                    .ok_or_else(|| format!("--random {value}: a count of scenes up to 100000"))?;
+            }
             "--seed" => seed = value.parse().map_err(|_| format!("--seed {value}"))?,
             other => return Err(format!("unknown flag {other} (--random N, --seed S)")),
         }

@@ -169,6 +169,8 @@ pub fn run(args: &[String]) -> Result<(), String> {
             other => return Err(format!("unknown flag {other} (--trade [--out DIR])")),
         }
     }
+    // (before the minutes of pulls, not after)
+    std::fs::create_dir_all(&out).map_err(|e| format!("--out {}: {e}", out.display()))?;
     let five = [
         ("paper: 89.8°, A/B = 10", 89.8, 10.0),
         ("89°, A/B = 10", 89.0, 10.0),

@@ -361,7 +361,7 @@ fn compute(coils: u32) -> Result<PhaseDiagram, Box<dyn Error + Send + Sync>> {
     let pops = CuspSearch::new()
         .intervals(INTERVALS)
         .pop_outs(&family, 3.0)?;
-    println!(
+    eprintln!(
         "n = {coils}: {} pop-outs at θ0 = {THETA0_DEG}°, A/B = {A_OVER_B}, ν = {NU}",
         pops.len()
     );
@@ -381,18 +381,28 @@ fn compute(coils: u32) -> Result<PhaseDiagram, Box<dyn Error + Send + Sync>> {
         lines.extend(r?);
     }
     let d = PhaseDiagram::new(coils, lines)?;
-    println!("computed in {:.1} s", clock.elapsed().as_secs_f64());
+    eprintln!("computed in {:.1} s", clock.elapsed().as_secs_f64());
     Ok(d)
 }
 
-fn main() -> Result<(), Box<dyn Error + Send + Sync>> {
+fn main() -> std::process::ExitCode {
+    match run() {
+        Ok(()) => std::process::ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("phase_diagram: {e}");
+            std::process::ExitCode::from(2)
+        }
+    }
+}
+
+fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
     let mut out = std::env::var_os("CARGO_TARGET_DIR")
         .map_or_else(
             || PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target"),
             PathBuf::from,
         )
         .join("hockle");
-    let (mut coils, mut force, mut scenes) = (4_u32, false, Vec::new());
+    let (mut coils, mut force, mut scenes, mut checks) = (4_u32, false, Vec::new(), false);
     let mut pull_to: Option<f64> = None;
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
@@ -408,7 +418,7 @@ fn main() -> Result<(), Box<dyn Error + Send + Sync>> {
                         .ok_or(format!("--pull {v}: a finite positive force F/((2πn)²B)"))?,
                 );
             }
-            "--check" => return check(coils),
+            "--check" => checks = true,
             "--coils" => {
                 let v = args.next().ok_or("--coils needs a number")?;
                 coils = v
@@ -432,6 +442,9 @@ fn main() -> Result<(), Box<dyn Error + Send + Sync>> {
             other => return Err(format!("unknown argument {other}; {}", usage()).into()),
         }
     }
+    if checks {
+        return check(coils);
+    }
     for &(t, a, nu) in &scenes {
         let check = |ok: bool, what: &str| -> Result<(), Box<dyn Error + Send + Sync>> {
             if ok {
@@ -452,11 +465,20 @@ fn main() -> Result<(), Box<dyn Error + Send + Sync>> {
     } else if let (false, Ok(csv)) = (force, std::fs::read_to_string(&committed)) {
         PhaseDiagram::from_csv(coils, &csv)?
     } else {
-        let d = compute(coils)?;
-        std::fs::create_dir_all(&out)?;
+        if !force {
+            eprintln!(
+                "no committed diagram for n = {coils} ({} not found; committed: n = 2, 3, 4, 6, 8): \
+                 computing it, which can take minutes",
+                committed.display()
+            );
+        }
+        // (the folder first: an --out that cannot be written fails now,
+        // not after the minutes of the computation)
+        std::fs::create_dir_all(&out).map_err(|e| format!("--out {}: {e}", out.display()))?;
+        let d = compute(coils).map_err(|e| format!("computing the diagram of n = {coils}: {e}"))?;
         let csv = out.join(format!("phase_diagram_n{coils}.csv"));
         std::fs::write(&csv, d.to_csv())?;
-        println!("wrote {}", csv.display());
+        eprintln!("wrote {}", csv.display());
         d
     };
     if scenes.is_empty() {
@@ -469,7 +491,7 @@ fn main() -> Result<(), Box<dyn Error + Send + Sync>> {
             .filter(|l| matches!(l.fixed, Fixed::AOverB(_)))
         {
             for p in l.points.iter().filter(|p| p.theta0 < HALF_PI - 1e-5) {
-                let read = diagram.cusp_theta0(l.pop_out, p.a_over_b, p.nu);
+                let read = diagram.cusp_theta0(l.pop_out, p.a_over_b, p.nu)?;
                 if read.start() != read.end() {
                     continue; // not resolved there: counted below
                 }

@@ -48,52 +48,84 @@ pub struct Curvature {
     pub force: f64,
 }
 
-impl Curvature {
-    fn is_finite(&self) -> bool {
-        self.extension.is_finite() && self.force.is_finite()
-    }
-}
-
 /// Subintervals of [0, 1] on which a segment's derivative is sampled for
 /// sign changes when the segment is a quintic (a pair of turning points
 /// closer than 1/64 of a segment, a wiggle far below any interpolant's
 /// accuracy, may be seen as none).
 const TURNING_SAMPLES: usize = 64;
 
-/// The polynomial x(τ) = Σ c_k τ^k (degree ≤ 5) of one axis on one segment.
+/// Above this largest coefficient a segment is summed scaled by it (a
+/// power of two, 2⁹⁰⁰: six terms of at most 2¹²⁴ after scaling cannot
+/// overflow, and dividing by a power of two is exact unless a coefficient
+/// is below 2⁻¹²², negligible beside the largest, above 2⁹⁰⁰).
+const HORNER_SCALED_ABOVE: f64 = 8.452_712_498_170_644e270;
+
+/// The polynomial x(τ) = Σ c_k τ^k (degree ≤ 5) of one axis on one segment,
+/// and its value at τ = 1: the next node's, exactly. (Σ c_k rounds a few
+/// ulps away from it, and a value between the two would be crossed by
+/// neither of the segments that meet there, or by both.)
 #[derive(Debug, Clone, Copy)]
-struct Segment([f64; 6]);
+struct Segment([f64; 6], f64);
 
 impl Segment {
     fn quintic(x: (f64, f64), v: (f64, f64), a: (f64, f64)) -> Self {
         let d = x.1 - x.0;
-        Segment([
-            x.0,
-            v.0,
-            0.5 * a.0,
-            10.0 * d - 6.0 * v.0 - 4.0 * v.1 - 0.5 * (3.0 * a.0 - a.1),
-            -15.0 * d + 8.0 * v.0 + 7.0 * v.1 + 0.5 * (3.0 * a.0 - 2.0 * a.1),
-            6.0 * d - 3.0 * v.0 - 3.0 * v.1 - 0.5 * (a.0 - a.1),
-        ])
+        Segment(
+            [
+                x.0,
+                v.0,
+                0.5 * a.0,
+                10.0 * d - 6.0 * v.0 - 4.0 * v.1 - 0.5 * (3.0 * a.0 - a.1),
+                -15.0 * d + 8.0 * v.0 + 7.0 * v.1 + 0.5 * (3.0 * a.0 - 2.0 * a.1),
+                6.0 * d - 3.0 * v.0 - 3.0 * v.1 - 0.5 * (a.0 - a.1),
+            ],
+            x.1,
+        )
     }
 
     fn cubic(x: (f64, f64), v: (f64, f64)) -> Self {
         let d = x.1 - x.0;
-        Segment([
-            x.0,
-            v.0,
-            3.0 * d - 2.0 * v.0 - v.1,
-            -2.0 * d + v.0 + v.1,
-            0.0,
-            0.0,
-        ])
+        Segment(
+            [
+                x.0,
+                v.0,
+                3.0 * d - 2.0 * v.0 - v.1,
+                -2.0 * d + v.0 + v.1,
+                0.0,
+                0.0,
+            ],
+            x.1,
+        )
     }
 
     fn linear(x0: f64, x1: f64) -> Self {
-        Segment([x0, x1 - x0, 0.0, 0.0, 0.0, 0.0])
+        Segment([x0, x1 - x0, 0.0, 0.0, 0.0, 0.0], x1)
+    }
+
+    /// Whether every coefficient is finite (a Hermite segment of finite
+    /// data near the ends of the double range can overflow: it is then
+    /// read at a lower degree).
+    fn is_finite(&self) -> bool {
+        self.0.iter().all(|c| c.is_finite())
     }
 
     fn at(&self, t: f64) -> f64 {
+        if t >= 1.0 {
+            return self.1;
+        }
+        let big = self.0.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
+        if big.is_infinite() {
+            // a line whose rise overflows: (1 − τ) x₀ + τ x₁ does not
+            return (1.0 - t) * self.0[0] + t * self.1;
+        }
+        if big > HORNER_SCALED_ABOVE {
+            // Horner's partial sums of coefficients near the largest double
+            // overflow (∞ − ∞ = NaN) where the value does not: sum them
+            // scaled by a power of two, exactly
+            let scale = HORNER_SCALED_ABOVE;
+            let sum = self.0.iter().rev().fold(0.0, |acc, c| acc * t + c / scale);
+            return sum * scale;
+        }
         self.0.iter().rev().fold(0.0, |acc, c| acc * t + c)
     }
 
@@ -118,7 +150,7 @@ impl Segment {
             for i in 1..=TURNING_SAMPLES {
                 let hi = i as f64 / TURNING_SAMPLES as f64;
                 let fhi = self.derivative_at(hi);
-                if flo * fhi < 0.0 {
+                if opposite(flo, fhi) {
                     crit.push(bisect(|t| self.derivative_at(t), lo, hi, flo));
                 } else if fhi == 0.0 && i < TURNING_SAMPLES {
                     crit.push(hi);
@@ -127,8 +159,14 @@ impl Segment {
             }
             return crit;
         }
-        // x'(τ) = b + 2cτ + 3dτ²
-        let (qa, qb, qc) = (3.0 * d, 2.0 * c, b);
+        // x'(τ) = b + 2cτ + 3dτ², divided by its largest coefficient (the
+        // discriminant's squares underflow for a segment of forces ~1e-200
+        // and overflow for ~1e200; the roots are the same)
+        let big = (3.0 * d).abs().max((2.0 * c).abs()).max(b.abs());
+        if !(big > 0.0 && big.is_finite()) {
+            return crit;
+        }
+        let (qa, qb, qc) = (3.0 * d / big, 2.0 * c / big, b / big);
         if qa.abs() > 1e-14 * (qb.abs() + qc.abs()) {
             let disc = qb * qb - 4.0 * qa * qc;
             if disc >= 0.0 {
@@ -165,7 +203,7 @@ impl Segment {
                 roots.push(hi);
                 continue;
             }
-            if flo * fhi > 0.0 {
+            if !opposite(flo, fhi) {
                 continue;
             }
             roots.push(bisect(|t| self.at(t) - v, lo, hi, flo));
@@ -175,21 +213,38 @@ impl Segment {
     }
 }
 
-/// The root of `f` in [lo, hi] (f(lo) = `flo`, f(hi) of the other sign),
-/// by bisection to the last bit.
+/// Whether `a` and `b` are non-zero and of opposite signs (not by their
+/// product, which underflows to 0 for two tiny values, e.g. 1e-300 and
+/// −1e-30, and then looked like a root between them).
+fn opposite(a: f64, b: f64) -> bool {
+    (a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0)
+}
+
+/// The root of `f` in [lo, hi) (f(lo) = `flo`, f(hi) of the other sign),
+/// by bisection to the last bit. Never `hi` itself: a root there (f(hi) =
+/// 0) is the caller's to report, and a crossing between the last two
+/// floats below `hi` belongs to this interval, not to the one starting at
+/// `hi`.
 fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64, flo: f64) -> f64 {
-    for _ in 0..200 {
+    let end = hi;
+    // (1100: from [0, 1] down to the smallest subnormal takes 1075)
+    for _ in 0..1100 {
         let mid = 0.5 * (lo + hi);
         if mid <= lo || mid >= hi {
             break;
         }
-        if f(mid) * flo > 0.0 {
+        let fmid = f(mid);
+        if fmid == 0.0 {
+            return mid;
+        }
+        if !opposite(fmid, flo) {
             lo = mid;
         } else {
             hi = mid;
         }
     }
-    0.5 * (lo + hi)
+    let mid = 0.5 * (lo + hi);
+    if mid >= end { lo } else { mid }
 }
 
 impl ForceExtension {
@@ -248,16 +303,24 @@ impl ForceExtension {
             (h * sa.extension, h * sb.extension),
             (h * sa.force, h * sb.force),
         );
-        match (self.curvature(i), self.curvature(i + 1)) {
-            (Some(ca), Some(cb)) if ca.is_finite() && cb.is_finite() => {
-                let h2 = h * h;
-                (
-                    Segment::quintic(ends, v.0, (h2 * ca.extension, h2 * cb.extension)),
-                    Segment::quintic(forces, v.1, (h2 * ca.force, h2 * cb.force)),
-                )
+        if let (Some(ca), Some(cb)) = (self.curvature(i), self.curvature(i + 1)) {
+            let h2 = h * h;
+            let quintic = (
+                Segment::quintic(ends, v.0, (h2 * ca.extension, h2 * cb.extension)),
+                Segment::quintic(forces, v.1, (h2 * ca.force, h2 * cb.force)),
+            );
+            if quintic.0.is_finite() && quintic.1.is_finite() {
+                return quintic;
             }
-            _ => (Segment::cubic(ends, v.0), Segment::cubic(forces, v.1)),
         }
+        let cubic = (Segment::cubic(ends, v.0), Segment::cubic(forces, v.1));
+        if cubic.0.is_finite() && cubic.1.is_finite() {
+            return cubic;
+        }
+        (
+            Segment::linear(ends.0, ends.1),
+            Segment::linear(forces.0, forces.1),
+        )
     }
 
     /// The point of the interpolant on segment `i` (points i, i+1) at

@@ -161,10 +161,27 @@ impl PhaseDiagram {
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] if a line has no point, a point outside
-    /// θ0 ∈ (0, π/2], A/B > 0, ν ∈ (−1, ½], or a pop-out index of `coils`
-    /// or more.
+    /// θ0 ∈ (0, π/2], A/B > 0 finite, ν ∈ (−1, ½], a fixed value outside
+    /// those ranges, or a pop-out index of `coils` or more.
     pub fn new(coils: u32, mut lines: Vec<CuspLine>) -> Result<Self> {
         for line in &mut lines {
+            match line.fixed {
+                Fixed::Nu(v) if !(v > -1.0 && v <= 0.5) => {
+                    return Err(Error::InvalidArgument {
+                        name: "cusp line fixed ν",
+                        value: v,
+                        allowed: "a Poisson ratio in (−1, ½]",
+                    });
+                }
+                Fixed::AOverB(v) if !(v > 0.0 && v.is_finite()) => {
+                    return Err(Error::InvalidArgument {
+                        name: "cusp line fixed A/B",
+                        value: v,
+                        allowed: "a finite positive ratio A/B",
+                    });
+                }
+                _ => {}
+            }
             if line.points.is_empty() {
                 return Err(Error::InvalidArgument {
                     name: "cusp line points",
@@ -186,13 +203,14 @@ impl PhaseDiagram {
                 if !(p.theta0 > 0.0
                     && p.theta0 <= core::f64::consts::FRAC_PI_2 + 1e-12
                     && p.a_over_b > 0.0
+                    && p.a_over_b.is_finite()
                     && p.nu > -1.0
                     && p.nu <= 0.5)
                 {
                     return Err(Error::InvalidArgument {
                         name: "cusp point θ0",
                         value: p.theta0,
-                        allowed: "cusps at θ0 in (0, π/2], A/B > 0, ν in (−1, ½]",
+                        allowed: "cusps at θ0 in (0, π/2], A/B > 0 finite, ν in (−1, ½]",
                     });
                 }
             }
@@ -241,9 +259,14 @@ impl PhaseDiagram {
     /// docs): a single value (start = end) where the lines know it, the
     /// range it lies in where they do not (0 to π/2 beyond an unfinished
     /// line); π/2 where the pop-out does not exist at any θ0 < 90°.
-    #[must_use]
-    pub fn cusp_theta0(&self, i: usize, a_over_b: f64, nu: f64) -> RangeInclusive<f64> {
-        self.bounds(i, a_over_b, nu).0
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] unless A/B > 0 finite and ν ∈ (−1, ½)
+    /// (outside them the reading was an empty range, ∞ to −∞, or the
+    /// nearest line's).
+    pub fn cusp_theta0(&self, i: usize, a_over_b: f64, nu: f64) -> Result<RangeInclusive<f64>> {
+        check_material(a_over_b, nu)?;
+        Ok(self.bounds(i, a_over_b, nu).0)
     }
 
     /// [`Self::cusp_theta0`] and, where it is a range, why.
@@ -293,22 +316,16 @@ impl PhaseDiagram {
                 allowed: "a helix angle in (0°, 90°)",
             });
         }
-        if !(a_over_b > 0.0 && a_over_b.is_finite()) {
-            return Err(Error::InvalidArgument {
-                name: "a_over_b",
-                value: a_over_b,
-                allowed: "a finite positive ratio A/B",
-            });
-        }
-        if !(nu > -1.0 && nu < 0.5) {
-            return Err(Error::InvalidArgument {
-                name: "nu",
-                value: nu,
-                allowed: "a Poisson ratio in (−1, 0.5)",
-            });
-        }
+        check_material(a_over_b, nu)?;
+        // only the pop-outs that have lines (an index without one lies at
+        // 90°, above every scene); not 0..pop_out_count(), which a
+        // diagram of many coils with one line of a large index made a
+        // loop of billions of readings
+        let mut mapped: Vec<usize> = self.lines.iter().map(|l| l.pop_out).collect();
+        mapped.sort_unstable();
+        mapped.dedup();
         let mut count = 0;
-        for i in 0..self.pop_out_count() {
+        for i in mapped {
             let (r, why) = self.bounds(i, a_over_b, nu);
             if theta0 > *r.end() {
                 count += 1;
@@ -363,21 +380,42 @@ impl PhaseDiagram {
     /// [`LineEnd::Range`].
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] for a malformed row (its number is the
-    /// value), and as [`PhaseDiagram::new`].
+    /// [`Error::InvalidArgument`] for a first line that is not one of the
+    /// two headers (`to_csv`'s, or the same without `,ends`: a file without
+    /// its header would lose its first row), a malformed row or one whose
+    /// number of fields is not its header's (the value is the row's line
+    /// number in the file, from 1), and as [`PhaseDiagram::new`].
     pub fn from_csv(coils: u32, csv: &str) -> Result<Self> {
+        const HEADER: &str = "pop_out,fixed,theta0_deg,a_over_b,nu,force_scaled";
+        let mut rows = csv.lines().enumerate();
+        let header = rows
+            .next()
+            .map(|(_, h)| h.trim_start_matches('\u{feff}').trim());
+        let fields = match header {
+            Some(h) if h == HEADER => 6,
+            Some(h) if h.strip_prefix(HEADER) == Some(",ends") => 7,
+            _ => {
+                return Err(Error::InvalidArgument {
+                    name: "phase diagram CSV header (line 1)",
+                    value: 1.0,
+                    allowed: "pop_out,fixed,theta0_deg,a_over_b,nu,force_scaled[,ends] \
+                              (PhaseDiagram::to_csv)",
+                });
+            }
+        };
         let mut lines: Vec<CuspLine> = Vec::new();
-        for (row, text) in csv.lines().enumerate().skip(1) {
+        for (row, text) in rows {
             let bad = || Error::InvalidArgument {
-                name: "phase diagram CSV row",
-                value: row as f64,
-                allowed: "pop_out,fixed (nu|a_over_b),theta0_deg,a_over_b,nu,force_scaled[,ends]",
+                name: "phase diagram CSV row (line number)",
+                value: (row + 1) as f64,
+                allowed: "pop_out,fixed (nu|a_over_b),theta0_deg,a_over_b,nu,force_scaled[,ends], \
+                          as many fields as the header",
             };
             if text.trim().is_empty() {
                 continue;
             }
             let f: Vec<&str> = text.split(',').collect();
-            if f.len() != 6 && f.len() != 7 {
+            if f.len() != fields {
                 return Err(bad());
             }
             let ends = match f.get(6) {
@@ -385,8 +423,8 @@ impl PhaseDiagram {
                 Some(e) => {
                     let (a, b) = e.trim().split_once('/').ok_or_else(bad)?;
                     Some([
-                        LineEnd::parse(a).ok_or_else(bad)?,
-                        LineEnd::parse(b).ok_or_else(bad)?,
+                        LineEnd::parse(a.trim()).ok_or_else(bad)?,
+                        LineEnd::parse(b.trim()).ok_or_else(bad)?,
                     ])
                 }
             };
@@ -431,6 +469,25 @@ impl PhaseDiagram {
         }
         Self::new(coils, lines)
     }
+}
+
+/// The A/B and ν a diagram is read at.
+fn check_material(a_over_b: f64, nu: f64) -> Result<()> {
+    if !(a_over_b > 0.0 && a_over_b.is_finite()) {
+        return Err(Error::InvalidArgument {
+            name: "a_over_b",
+            value: a_over_b,
+            allowed: "a finite positive ratio A/B",
+        });
+    }
+    if !(nu > -1.0 && nu < 0.5) {
+        return Err(Error::InvalidArgument {
+            name: "nu",
+            value: nu,
+            allowed: "a Poisson ratio in (−1, 0.5)",
+        });
+    }
+    Ok(())
 }
 
 /// The free parameter of a line.

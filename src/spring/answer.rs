@@ -5,6 +5,7 @@
 use std::time::Duration;
 
 use super::{Jump, LoadedShape, PopOut, Response};
+use crate::continuation::Termination;
 
 /// The value of an [`Answer`], one variant per
 /// [`Question`](super::Question).
@@ -174,6 +175,7 @@ pub struct Answer {
     pub(super) choice: Choice,
     pub(super) reason: Reason,
     pub(super) reached: bool,
+    pub(super) termination: Option<Termination>,
     pub(super) elapsed: Duration,
 }
 
@@ -209,6 +211,15 @@ impl Answer {
     #[must_use]
     pub fn reached_target(&self) -> bool {
         self.reached
+    }
+
+    /// How the pull that computed the answer ended (`None` for a closed
+    /// form): where it stopped before its target, why (a Newton failure at
+    /// the smallest step, the step limit, …), typed; what it computed up
+    /// to there is the answer's value.
+    #[must_use]
+    pub fn termination(&self) -> Option<&Termination> {
+        self.termination.as_ref()
     }
 
     /// The model that answered.
@@ -261,7 +272,10 @@ impl core::fmt::Display for Answer {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.write_str(&self.why())?;
         if !self.reached {
-            f.write_str(" (the pull stopped before its target)")?;
+            match &self.termination {
+                Some(t) => write!(f, " (the pull stopped before its target: {t})")?,
+                None => f.write_str(" (the pull stopped before its target)")?,
+            }
         }
         Ok(())
     }

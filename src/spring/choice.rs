@@ -49,6 +49,10 @@ const RETRY_DIVISOR: f64 = 10.0;
 /// The rod's smallest tolerance ([`crate::rod::Pull::tolerance`]).
 pub(super) const MIN_ROD_TOLERANCE: f64 = 1e-12;
 
+/// The rod's largest tolerance ([`crate::rod::Pull::tolerance`]), and so
+/// the largest of every answer the rod computes.
+const MAX_ROD_TOLERANCE: f64 = 1e-1;
+
 /// The elastica's lower bound is taken this much below the distance
 /// measured to its sampled curve (the chords of 400 samples over
 /// F/((2πn)²B) ≤ 2 cos θ0 are far closer than this).
@@ -78,7 +82,10 @@ impl Spring {
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] for a tolerance that is not finite and
-    /// positive (the rod also needs 1e-12 ≤ tol ≤ 1e-1) and for a bad
+    /// positive, or above 1e-1 (the rod's loosest) for any question but
+    /// the spring constant (a tolerance below the rod's tightest, 1e-12, is
+    /// answered at 1e-12 and reported as not met where its estimate says
+    /// so), and for a bad
     /// question ([`Question::check`], [`Question::target`]); the errors of
     /// [`Spring::spring_constant`] (a spring constant of a spring with
     /// custom intrinsic strains) and of [`RodModel`]'s pull. A pull that
@@ -103,14 +110,30 @@ impl Spring {
                 choice: Choice::LinearResponse,
                 reason: Reason::ClosedForm,
                 reached: true,
+                termination: None,
                 elapsed: clock.elapsed(),
             });
         };
+        if tolerance > MAX_ROD_TOLERANCE {
+            // (checked here, not by the rod, which is run at another
+            // tolerance and would name that one)
+            return Err(Error::InvalidArgument {
+                name: "tolerance",
+                value: tolerance,
+                allowed: "a finite, positive tolerance, at most 1e-1 (the rod's loosest) \
+                          for every question but the spring constant",
+            });
+        }
         if let Question::Shape { .. } = question {
             return self.answer_shape(target, tolerance, clock);
         }
-        let helix = self.helix_set_aside(target)?;
-        let elastica = self.elastica_set_aside(target, tolerance)?;
+        // (why the cheap models are set aside is said, not needed: where
+        // their own closed form or pull fails, e.g. a spring constant
+        // beyond the double range, the rod still answers)
+        let helix = self.helix_set_aside(target).unwrap_or(SetAside::NoBound);
+        let elastica = self
+            .elastica_set_aside(target, tolerance)
+            .unwrap_or(SetAside::NoBound);
 
         let pull = |tol: f64| -> Result<crate::rod::PullRun> {
             RodModel::default()
@@ -133,6 +156,7 @@ impl Spring {
         }
         let estimated_error = reported(&run);
         let reached = run.reached_target();
+        let termination = run.termination().clone();
         let response = RodModel::response(run)?;
         let pop_outs = response.pop_outs();
         let scale = self.force_scale();
@@ -169,6 +193,7 @@ impl Spring {
                 pop_outs: pop_outs.len(),
             },
             reached,
+            termination: Some(termination),
             elapsed: clock.elapsed(),
         })
     }

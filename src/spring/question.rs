@@ -71,10 +71,24 @@ impl Question {
     ///
     /// # Errors
     /// As [`Question::check`]; [`Error::InvalidArgument`] for values on
-    /// both sides of rest (or at rest); [`Error::UnreachableTarget`] for an
-    /// extension outside (−1, 1).
+    /// both sides of rest (or at rest), and for extensions when the rest
+    /// extension is not known (NaN: a spring with other intrinsic strains
+    /// than its helix's); [`Error::UnreachableTarget`] for an extension
+    /// outside (−1, 1).
     pub fn target(&self, rest_extension: f64) -> Result<Option<Target>> {
         self.check()?;
+        if let (Question::ForcesAt(_), true) = (self, rest_extension.is_nan()) {
+            // (NaN: a spring with other intrinsic strains, whose rest
+            // state the rod finds only when it relaxes; no side of it can
+            // be told, nor which extension is farthest)
+            return Err(Error::InvalidArgument {
+                name: "rest extension",
+                value: rest_extension,
+                allowed: "a known rest extension: the forces at extensions are asked of springs \
+                          with their helix's intrinsic strains; for others ask the curve \
+                          (Question::Curve) and read it with ForceExtension::force_at",
+            });
+        }
         let mixed = match self {
             Question::ExtensionsAt(forces) => !one_side(forces, 0.0),
             Question::ForcesAt(extensions) => !one_side(extensions, rest_extension),

@@ -257,13 +257,17 @@ impl Spring {
             });
         }
         let (a, b, c) = (self.stiffness.a(), self.stiffness.b(), self.stiffness.c());
-        // every term over the largest stiffness, so no stiffness in
-        // (0, f64::MAX] overflows on the way
-        let s = a.max(b).max(c);
+        // the compliance times the smallest stiffness s: every term at most
+        // 1.5, so no stiffness in (0, f64::MAX] overflows on the way (over
+        // the largest, 0.5/(A/s) overflowed for A/B = 1e-320, whose k,
+        // about 2A(2πn/sin θ0)², is a double); the lever squared is
+        // formed with √s, so a tiny s does not follow an overflow
+        let s = a.min(b).min(c);
         let (sin, cos) = self.helix_angle.sin_cos();
-        let compliance = 0.5 / (a / s) + 1.5 * (cos * cos / (b / s) + sin * sin / (c / s));
+        let compliance = 0.5 * (s / a) + 1.5 * (cos * cos * (s / b) + sin * sin * (s / c));
         let rho = 2.0 * PI * f64::from(self.coils);
-        let k = (rho / sin) * (rho / sin) / compliance * s;
+        let lever = rho / sin * s.sqrt();
+        let k = lever * lever / compliance;
         if k.is_finite() && k > 0.0 {
             Ok(k)
         } else {

@@ -139,6 +139,7 @@ impl Spring {
             ControlFlow::<()>::Continue(())
         })?;
         let reached = run.reached_target();
+        let termination = run.termination().clone();
         let pop_outs = RodModel::response(run)?.pop_outs().len();
         // a run observes its start point at least
         let mut coarse = last.ok_or(Error::InvalidCount {
@@ -188,6 +189,7 @@ impl Spring {
                 pop_outs,
             },
             reached,
+            termination: Some(termination),
             elapsed: clock.elapsed(),
         })
     }

@@ -31,9 +31,11 @@ mod continuation;
 mod curve;
 mod elastica;
 mod found;
+mod found_audit15;
 mod found_extremes;
 mod helix;
 mod hostile;
+mod phase_diagram;
 mod rod;
 mod special;
 mod spring;
@@ -100,6 +102,16 @@ fn curve_entries() {
     run("curve", 9, curve::CI_CALLS, curve::fuzz);
 }
 
+#[test]
+fn phase_diagram_entries() {
+    run(
+        "phase_diagram",
+        10,
+        phase_diagram::CI_CALLS,
+        phase_diagram::fuzz,
+    );
+}
+
 /// Issue 10: `Mesh::uniform(usize::MAX)` aborted the process on the
 /// allocation; bvp now refuses more than `Mesh::MAX_INTERVALS` intervals
 /// (in `Mesh` and in every `Collocation` count) and systems past 2 GiB of
@@ -135,6 +147,11 @@ fn long_run() {
         ("rod", rod::CI_CALLS, rod::fuzz),
         ("spring", spring::CI_CALLS, spring::fuzz),
         ("curve", curve::CI_CALLS, curve::fuzz),
+        (
+            "phase_diagram",
+            phase_diagram::CI_CALLS,
+            phase_diagram::fuzz,
+        ),
     ]
     .into_iter()
     .enumerate()

@@ -185,7 +185,15 @@ fn settings(g: &mut Gen, r: &mut Report, rod: Rod, t: Target, rest: f64) -> Opti
         .max_angle(angle)
         .max_steps(max_steps)
         .locate_folds(g.u64() & 1 == 0);
-    let valid = rod.theta0() != FRAC_PI_2
+    // the accuracy knob (issue 11; audit15), on the fixed mesh drawn
+    let mut tol_ok = true;
+    if hostile && g.u64().is_multiple_of(3) {
+        let tol = g.arg(1e-12, 0.1);
+        tol_ok = (1e-12..=0.1).contains(&tol);
+        pull = pull.tolerance(tol);
+    }
+    let valid = tol_ok
+        && rod.theta0() != FRAC_PI_2
         && target_ok(t, rest)
         && force_in_range(t, rod.scale().value())
         && norm_ok(rod.scale().value())

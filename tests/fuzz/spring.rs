@@ -9,7 +9,9 @@ use std::ops::ControlFlow;
 use hockle::continuation::{Point, Termination};
 use hockle::error::MAX_POINTS as MAX_SAMPLES;
 use hockle::nalgebra::Vector3;
-use hockle::spring::{ElasticaModel, HelixModel, Model, Response, RodModel, Spring};
+use hockle::spring::{
+    ElasticaModel, HelixModel, Model, Question, Response, RodModel, Spring, Value,
+};
 use hockle::{Error, Target};
 
 use crate::curve::response_entries;
@@ -17,8 +19,9 @@ use crate::hostile::{Gen, Report, finite};
 use crate::rod::{force_in_range, helix_angle, norm_ok, scale_ok, stiffness, target, target_ok};
 
 /// Springs take microseconds, a helix pull tens of microseconds, an
-/// elastica pull a millisecond, a stopped rod pull a few: about 2 s.
-pub const CI_CALLS: u64 = 40_000;
+/// elastica pull a millisecond, a stopped rod pull a few, a refused
+/// question microseconds: about 2 s.
+pub const CI_CALLS: u64 = 50_000;
 
 /// The rod pull is stopped after this many points.
 const ROD_POINTS: usize = 4;
@@ -83,6 +86,100 @@ pub fn fuzz(g: &mut Gen, r: &mut Report, calls: u64) {
             || format!("{spring}: force scale {}", spring.force_scale()),
         );
         models(g, r, &spring);
+        if g.u64().is_multiple_of(2) {
+            questions(g, r, &spring);
+        }
+    }
+}
+
+/// A hostile `Question` (issue 14): its values drawn near rest, at the
+/// ends of their domains, or anything.
+fn question(g: &mut Gen, rest: f64) -> Question {
+    let values = |g: &mut Gen, around: f64| -> Vec<f64> {
+        let len = (g.u64() % 4) as usize;
+        (0..len)
+            .map(|_| match g.u64() % 3 {
+                0 => around + g.arg(-1e-3, 1e-3),
+                1 => g.arg(-1.0, 1.0),
+                _ => g.any_f64(),
+            })
+            .collect()
+    };
+    match g.u64() % 6 {
+        0 => Question::Curve {
+            max_force: g.any_f64(),
+        },
+        1 => Question::PopOuts {
+            max_force: g.any_f64(),
+        },
+        2 => Question::ForcesAt(values(g, rest)),
+        3 => Question::ExtensionsAt(values(g, 0.0)),
+        4 => Question::Shape {
+            at: target(g, rest),
+        },
+        _ => Question::SpringConstant,
+    }
+}
+
+/// Whether `q` is a valid question for a spring whose rest extension is
+/// `rest` (NaN: not known), from `Question`'s docs.
+fn question_ok(q: &Question, rest: f64) -> bool {
+    let side = |v: &[f64], at: f64| v.iter().all(|x| *x > at) || v.iter().all(|x| *x < at);
+    match q {
+        Question::Curve { max_force } | Question::PopOuts { max_force } => {
+            max_force.is_finite() && *max_force != 0.0
+        }
+        Question::ForcesAt(x) => {
+            !x.is_empty()
+                && finite(x)
+                && !rest.is_nan()
+                && side(x, rest)
+                && x.iter().all(|v| *v > -1.0 && *v < 1.0)
+        }
+        Question::ExtensionsAt(f) => !f.is_empty() && finite(f) && side(f, 0.0),
+        Question::Shape { at } => target_ok(*at, rest),
+        _ => true,
+    }
+}
+
+/// `Question::check`/`target` and `Spring::answer` where it costs nothing:
+/// a refused question or tolerance is a typed error before any pull, the
+/// spring constant a closed form.
+fn questions(g: &mut Gen, r: &mut Report, spring: &Spring) {
+    let rest = if spring.is_helical() {
+        spring.helix_angle().cos()
+    } else {
+        f64::NAN
+    };
+    let q = question(g, rest);
+    let tol = g.arg(1e-12, 0.1);
+    let valid = question_ok(&q, rest);
+    let what = || format!("{q:?}.target({rest:e})");
+    if let Some(res) = r.call(what, || q.target(rest)) {
+        r.check(res.is_ok() == valid, || format!("{}: {res:?}", what()));
+    }
+    let tol_ok =
+        tol.is_finite() && tol > 0.0 && (matches!(q, Question::SpringConstant) || tol <= 0.1);
+    let constant = matches!(q, Question::SpringConstant);
+    if valid && tol_ok && !constant {
+        return; // a pull: the models' entries run those
+    }
+    let what = || format!("{spring}: answer({q:?}, {tol:e})");
+    let Some(res) = r.call(what, || spring.answer(&q, tol)) else {
+        return;
+    };
+    match res {
+        Ok(a) => r.check(
+            constant
+                && tol_ok
+                && spring.is_helical()
+                && matches!(a.value(), Value::SpringConstant(k) if k.is_finite() && *k > 0.0),
+            || format!("{}: {a:?}", what()),
+        ),
+        Err(e) => r.check(
+            !(valid && tol_ok) || matches!(e, Error::Overflow { .. } | Error::OutsideModel { .. }),
+            || format!("{}: {e}", what()),
+        ),
     }
 }
 

@@ -116,13 +116,25 @@ fn a_diagram_counts_the_curves_below_a_scene() {
         .map(|r| r.rsplit_once(',').unwrap().0.to_string() + "\n")
         .collect();
     assert_eq!(PhaseDiagram::from_csv(4, &old).unwrap(), d);
-    assert!(PhaseDiagram::from_csv(4, "header\n0,nu,1,2\n").is_err());
-    assert!(PhaseDiagram::from_csv(4, "header\n0,nu,80,2,0,0.5,tip/nowhere\n").is_err());
+    assert!(
+        PhaseDiagram::from_csv(
+            4,
+            "pop_out,fixed,theta0_deg,a_over_b,nu,force_scaled\n0,nu,1,2\n"
+        )
+        .is_err()
+    );
+    assert!(
+        PhaseDiagram::from_csv(
+            4,
+            "pop_out,fixed,theta0_deg,a_over_b,nu,force_scaled,ends\n0,nu,80,2,0,0.5,tip/nowhere\n"
+        )
+        .is_err()
+    );
     // a pop-out index a 4-coil spring cannot have (a reading loops over
     // every index below the largest)
     for bad in [
-        "header\n4,nu,80,2,0,0.5\n",
-        "header\n18446744073709551615,nu,80,2,0,0.5\n",
+        "pop_out,fixed,theta0_deg,a_over_b,nu,force_scaled\n4,nu,80,2,0,0.5\n",
+        "pop_out,fixed,theta0_deg,a_over_b,nu,force_scaled\n18446744073709551615,nu,80,2,0,0.5\n",
     ] {
         assert!(
             matches!(
@@ -150,7 +162,7 @@ fn a_diagram_says_where_it_does_not_know() {
     );
     let d = PhaseDiagram::new(4, vec![folded.clone()]).unwrap();
     let n = |t: f64, a| d.pop_outs(f64::to_radians(t), a, 0.0);
-    let r = d.cusp_theta0(0, 17.0, 0.0);
+    let r = d.cusp_theta0(0, 17.0, 0.0).unwrap();
     let (lo, hi) = (r.start().to_degrees(), r.end().to_degrees());
     // the three values to 1e-3° (printed to 3 decimals above)
     assert!(
@@ -164,7 +176,7 @@ fn a_diagram_says_where_it_does_not_know() {
         Err(Error::NotMapped { pop_out: 0, .. })
     ));
     // single-valued elsewhere, rising or falling
-    let r = d.cusp_theta0(0, 100.0, 0.0);
+    let r = d.cusp_theta0(0, 100.0, 0.0).unwrap();
     assert_eq!(r.start(), r.end());
     assert_eq!(n(85.5, 10.0).unwrap(), 0);
     // A line given the other way (A/B falling) is reversed, ends and all.

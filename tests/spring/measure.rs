@@ -199,12 +199,24 @@ pub const SAMPLES: usize = 2000;
 /// The last point of a pull of `spring` to `at` (fixed mesh, module docs),
 /// solved again on `per_coil` intervals per coil.
 pub fn shape_reference(spring: &Spring, at: Target, per_coil: usize) -> Equilibrium {
+    try_shape_reference(spring, at, per_coil).unwrap()
+}
+
+/// [`shape_reference`], or why there is none (a pull that fails or stops
+/// before `at`, a mesh too large): for the command line of
+/// `examples/models`, which must not panic on a scene the reference cannot
+/// do.
+pub fn try_shape_reference(
+    spring: &Spring,
+    at: Target,
+    per_coil: usize,
+) -> Result<Equilibrium, String> {
     let driver = RodModel::default()
         .tolerance(1e-8)
         .intervals(10 * spring.coils() as usize)
         .points(7)
         .driver(spring, at)
-        .unwrap();
+        .map_err(|e| e.to_string())?;
     let rod = *driver.rod();
     let mut last: Option<Solution> = None;
     let run = driver
@@ -212,20 +224,24 @@ pub fn shape_reference(spring: &Spring, at: Target, per_coil: usize) -> Equilibr
             last = Some(p.solution().clone());
             ControlFlow::<()>::Continue(())
         })
-        .unwrap();
-    assert!(
-        run.reached_target(),
-        "reference of {spring}: {:?}",
-        run.termination()
-    );
-    let last = last.unwrap();
+        .map_err(|e| e.to_string())?;
+    if !run.reached_target() {
+        return Err(format!(
+            "the reference of {spring} stopped before {at}: {}",
+            run.termination()
+        ));
+    }
+    let last = last.ok_or("the reference has no point")?;
+    let intervals = per_coil
+        .checked_mul(spring.coils() as usize)
+        .ok_or("too many intervals for the reference")?;
     let fine = Collocation::new()
         .points(7)
-        .mesh(Mesh::uniform(per_coil * spring.coils() as usize).unwrap())
+        .mesh(Mesh::uniform(intervals).map_err(|e| e.to_string())?)
         .newton_tolerance(1e-13)
         .solve(&rod, &last, last.parameters())
-        .unwrap();
-    Equilibrium::new(rod, fine).unwrap()
+        .map_err(|e| e.to_string())?;
+    Equilibrium::new(rod, fine).map_err(|e| e.to_string())
 }
 
 pub fn centreline(eq: &Equilibrium) -> Vec<[f64; 3]> {
