@@ -442,6 +442,23 @@ impl Pull {
                 allowed: "(2πn)²B between about 1e-154 and 1e154: the pull's norm squares it",
             });
         }
+        // (audit15) the strains are M/K: a stiffness whose reciprocal
+        // overflows (A/B = 1e-320) reached the start and failed there with
+        // a non-finite Jacobian blamed on the problem
+        let k = self.rod.stiffness();
+        for (name, v) in [
+            ("stiffness A", k.a()),
+            ("stiffness B", k.b()),
+            ("stiffness C", k.c()),
+        ] {
+            if !(1.0 / v).is_finite() {
+                return Err(Error::InvalidArgument {
+                    name,
+                    value: v,
+                    allowed: "a stiffness whose reciprocal is finite (at least 1/f64::MAX): the rod's strains are M/K",
+                });
+            }
+        }
         let ds = self.first_step.unwrap_or(self.ds_min);
         if !(self.ds_min > 0.0
             && self.ds_min <= ds.abs()

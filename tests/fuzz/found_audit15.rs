@@ -445,3 +445,30 @@ fn the_spring_constant_of_a_vanishing_bending_stiffness() {
     let a = spring.answer(&Question::SpringConstant, 1e-6).unwrap();
     assert!(a.reached_target());
 }
+
+/// Found by audit15 (fixed by the lead): a rod whose bending stiffness A
+/// is 1e-320 (A/B = 1e-320) passed `Pull::check` and failed at the start
+/// with a non-finite Jacobian "at s = NaN" blamed on the problem (its
+/// strains are M/A, and 1/A overflows). Now `check` refuses it, naming
+/// the stiffness; a tiny but representable reciprocal still passes.
+#[test]
+fn a_stiffness_whose_reciprocal_overflows_is_refused_before_the_pull() {
+    let rod = |a: f64| {
+        hockle::rod::Rod::new(
+            4,
+            60.0_f64.to_radians(),
+            hockle::Stiffness::new(a, 1.0, 0.8).unwrap(),
+        )
+        .unwrap()
+    };
+    let pull = hockle::rod::Pull::new(rod(1e-320), Target::Force(1.0));
+    assert!(matches!(
+        pull.check(),
+        Err(Error::InvalidArgument { name: "stiffness A", value, .. }) if value == 1e-320
+    ));
+    assert!(
+        hockle::rod::Pull::new(rod(1e-300), Target::Force(1.0))
+            .check()
+            .is_ok()
+    );
+}

@@ -197,6 +197,7 @@ fn settings(g: &mut Gen, r: &mut Report, rod: Rod, t: Target, rest: f64) -> Opti
         && target_ok(t, rest)
         && force_in_range(t, rod.scale().value())
         && norm_ok(rod.scale().value())
+        && reciprocals_ok(&rod)
         && step_ok
         && angle > 0.0
         && angle <= PI
@@ -217,6 +218,13 @@ fn settings(g: &mut Gen, r: &mut Report, rod: Rod, t: Target, rest: f64) -> Opti
         pull.intervals(intervals.min(12))
             .max_steps(max_steps.min(PULL_STEPS)),
     )
+}
+
+/// Whether every stiffness of the rod has a finite reciprocal (the
+/// strains are M/K; `Pull::check`).
+pub(crate) fn reciprocals_ok(rod: &Rod) -> bool {
+    let k = rod.stiffness();
+    [k.a(), k.b(), k.c()].iter().all(|v| (1.0 / v).is_finite())
 }
 
 /// Errors a valid pull may still end in before its first step: the rest

@@ -373,8 +373,11 @@ pub fn check_response(r: &mut Report, resp: &Response, exact: bool, what: &dyn F
 /// `RodModel::pull_observed` on a tiny mesh, stopped by the observer after
 /// `ROD_POINTS` points (the model has no step limit of its own).
 fn rod_pull(g: &mut Gen, r: &mut Report, spring: &Spring, t: Target, valid_target: bool) {
-    let valid_target =
-        valid_target && force_in_range(t, spring.force_scale()) && norm_ok(spring.force_scale());
+    let k = spring.stiffness();
+    let valid_target = valid_target
+        && force_in_range(t, spring.force_scale())
+        && norm_ok(spring.force_scale())
+        && [k.a(), k.b(), k.c()].iter().all(|v| (1.0 / v).is_finite());
     if !g.u64().is_multiple_of(6) {
         // the driver only: validation without solving
         let what = || format!("RodModel: driver({spring}, {t})");
