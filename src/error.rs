@@ -122,8 +122,12 @@ pub enum Error {
         /// The largest scaled force on the branch (at m₁ = e^−690).
         reachable: f64,
     },
-    /// The result exists but is beyond the largest double.
-    #[error("the {quantity} at {name} = {value} is beyond the largest double (about 1.8e308)")]
+    /// The result exists but is not representable: beyond the largest
+    /// double, or a positive quantity below the smallest (it would round to
+    /// zero).
+    #[error(
+        "the {quantity} at {name} = {value} is not representable: beyond the largest double (about 1.8e308) or, positive, below the smallest (about 4.9e-324)"
+    )]
     Overflow {
         /// What was asked for ("force", "spring constant", …).
         quantity: &'static str,
