@@ -199,6 +199,8 @@ mod carlson;
 #[rustfmt::skip]
 mod carlson_series;
 #[rustfmt::skip]
+mod atan_table;
+#[rustfmt::skip]
 mod coeffs;
 mod complete;
 mod derivatives;
