@@ -2,6 +2,7 @@
 
 use super::Modulus;
 use super::complete::{ellip_e, ellip_k};
+use super::f_near_one_coeffs::{A, Q1, Q2, Q3, Q4, Q5, Q6, Q7, Q8};
 use super::half_argument::{e_half_argument, f_half_argument};
 
 /// π split as a double-double: `PI_HI + PI_LO` = π to ~1e-32.
@@ -137,11 +138,47 @@ fn delta(s: f64, c: f64, mc: f64) -> f64 {
     (c * c + mc * s * s).sqrt()
 }
 
+/// ε = m₁ tan²φ up to which [`f_near_one`] is used (with tan φ ≥ 2).
+const NEAR_ONE_EPS: f64 = 1.0 / 64.0;
+
+/// F for ε = m₁ tan²φ ≤ 1/64 and tan φ ≥ 2 (so m₁ ≤ 1/256): the binomial
+/// series of (1 + m₁ tan²θ)^{−1/2} integrated term by term,
+///
+/// ```text
+/// F = A(m₁) asinh(tan φ) + (1/sin φ) Σ_{i=1..8} εⁱ Q_i(m₁),   A = 2K(m₁)/π
+/// ```
+/// (derivation and coefficients: `tests/data/gen_special_f_near_one.py`,
+/// truncation ≤ 4e-19 of F). asinh(tan φ) = ln((1 + sin φ)/cos φ), one
+/// logarithm of an exactly divided ratio ≥ 2 + √5; the corrections are
+/// ≤ 1/64 of F. Near m = 1 with φ away from π/2 by more than k′ this
+/// replaces four to six halvings (each a division and two square roots).
+#[inline(always)]
+fn f_near_one(s: f64, c: f64, mc: f64) -> f64 {
+    let at = |p: &[f64]| {
+        let mut acc = 0.0;
+        let mut k = p.len();
+        while k > 0 {
+            k -= 1;
+            acc = p[k] + mc * acc;
+        }
+        acc
+    };
+    let eps = mc * (s * s) / (c * c);
+    let (e2, e4) = (eps * eps, (eps * eps) * (eps * eps));
+    let q = |a: &[f64], b: &[f64]| at(a) + eps * at(b);
+    let corr = eps * ((q(&Q1, &Q2) + e2 * q(&Q3, &Q4)) + e4 * (q(&Q5, &Q6) + e2 * q(&Q7, &Q8)));
+    at(&A) * ((1.0 + s) / c).ln() + corr / s
+}
+
 /// F on 0 ≤ r ≤ π/2 from sin r, cos r ≥ 0: Δ = √(c² + m₁ s²) (never
-/// 1 − m s², which cancels), then [`f_half_argument`].
+/// 1 − m s², which cancels), then [`f_half_argument`], or [`f_near_one`]
+/// where m₁ tan²r ≤ 1/64 and tan r ≥ 2.
 #[inline(always)]
 pub(crate) fn f_reduced(s: f64, c: f64, modulus: Modulus) -> f64 {
     let (m, mc) = (modulus.m(), modulus.complement());
+    if c <= 0.5 * s && mc * (s * s) <= NEAR_ONE_EPS * (c * c) {
+        return f_near_one(s, c, mc);
+    }
     let d = delta(s, c, mc);
     if folds(s, c, mc) {
         // sin ψ = c/Δ, cos ψ = k′s/Δ, Δ(ψ) = k′/Δ: one division.

@@ -202,6 +202,8 @@ mod carlson_series;
 mod atan_table;
 #[rustfmt::skip]
 mod coeffs;
+#[rustfmt::skip]
+mod f_near_one_coeffs;
 mod complete;
 mod derivatives;
 mod duplication;
