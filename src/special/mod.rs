@@ -202,8 +202,7 @@ mod carlson_series;
 mod atan_table;
 #[rustfmt::skip]
 mod coeffs;
-#[rustfmt::skip]
-mod f_near_one_coeffs;
+
 mod complete;
 mod derivatives;
 mod duplication;
@@ -215,6 +214,8 @@ mod h_series;
 mod incomplete;
 mod jacobi;
 mod landen;
+#[rustfmt::skip]
+mod near_one_coeffs;
 #[rustfmt::skip]
 mod maclaurin_coeffs;
 mod modulus;
