@@ -253,7 +253,13 @@ pub(crate) fn e_reduced(s: f64, c: f64, modulus: Modulus) -> f64 {
 /// Fukushima 2010) through sn²(u/2) = (1 − cn)/(1 + dn) (DLMF 22.6.19–21)
 /// until sin² ≤ 0.07, where a 15-term series in sin² (P_k the coefficients
 /// of ((1 − y)(1 − my))^{−1/2}) gives F(u/2ⁿ); near π/2 the complementary
-/// amplitude folds F(r) to K − F(ψ).
+/// amplitude folds F(r) to K − F(ψ). Near m = 1, where m₁ tan²r ≤ 1/64 and
+/// tan r ≥ 2, the binomial series in m₁ tan²θ integrated term by term
+/// replaces the halvings:
+///
+/// ```text
+/// F(r, k) = A(m₁) asinh(tan r) + (1/sin r) Σ_{i=1..8} (m₁ tan²r)ⁱ Q_i(m₁),   A = 2K(k′)/π
+/// ```
 ///
 /// # Special cases
 /// NaN or infinite φ gives NaN. F(0, k) = 0; F(φ, 0) = φ; F is odd in φ.
@@ -307,7 +313,9 @@ pub fn ellip_f(phi: f64, modulus: Modulus) -> f64 {
 /// little in E), H taken there from its Maclaurin
 /// series in sin², and doubled back by a formula of positive terms (from
 /// DLMF 22.16.27), so nothing cancels even as m → 1. Near r = π/2 the
-/// complementary amplitude folds E(r) to E − E(ψ) + m sin r sin ψ.
+/// complementary amplitude folds E(r) to E − E(ψ) + m sin r sin ψ. Where
+/// m₁ tan²r ≤ 1/64 and tan r ≥ 2, E(r) = sin r + m₁(α(m₁) asinh(tan r) +
+/// β(m₁) sin r + Σ (m₁ tan²r)ⁱ R_i(m₁)/sin r) instead, as for [`ellip_f`].
 ///
 /// # Special cases
 /// NaN or infinite φ gives NaN. E(0, k) = 0; E(φ, 0) = φ; E(φ, 1) = sin φ on
