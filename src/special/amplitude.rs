@@ -11,89 +11,33 @@
 //! itself, so am does not wait for the quarter-period shift's division and
 //! square root.
 
-/// atan(i/8) for i = 0..8 as hi + lo (mpmath, 40 digits:
-/// `atan(mpf(i)/8)` split into two doubles).
-const ATAN_HI: [f64; 9] = [
-    0.0,
-    0.12435499454676144,
-    0.24497866312686414,
-    0.35877067027057225,
-    0.4636476090008061,
-    0.5585993153435624,
-    0.6435011087932844,
-    0.7188299996216245,
-    core::f64::consts::FRAC_PI_4,
-];
-const ATAN_LO: [f64; 9] = [
-    0.0,
-    -3.1253241424539383e-18,
-    1.0698755618734451e-17,
-    -2.4623815582638635e-17,
-    2.2698777452961687e-17,
-    -5.4556305485916264e-18,
-    1.5834785051444286e-17,
-    -2.1478388444456983e-17,
-    3.061616997868383e-17,
-];
-/// π/2 − atan(i/8) for i = 0..8 as hi + lo (mpmath, 40 digits).
-const COATAN_HI: [f64; 9] = [
-    core::f64::consts::FRAC_PI_2,
-    1.446441332248135,
-    1.3258176636680326,
-    1.2120256565243244,
-    1.1071487177940904,
-    1.0121970114513341,
-    0.9272952180016122,
-    0.8519663271732721,
-    core::f64::consts::FRAC_PI_4,
-];
-const COATAN_LO: [f64; 9] = [
-    6.123233995736766e-17,
-    9.211323971545052e-17,
-    -8.824429373951136e-17,
-    3.034500430874847e-17,
-    9.40447137356638e-17,
-    6.668797050595929e-17,
-    4.5397554905923374e-17,
-    -2.831157406069101e-17,
-    3.061616997868383e-17,
-];
+use super::atan_table::ATAN_NODES;
 
-/// atan(n/d), or π/2 − atan(n/d) when `co`, for 0 ≤ n ≤ d (n may be a hair
-/// below 0, d > 0), with one division and no branch.
-///
-/// n/d is placed by eight comparisons next to the nearest c = i/8, and
-/// atan(n/d) = atan c + atan x with x = (8n − i d)/(8d + i n), |x| ≤ 1/16,
-/// where the Taylor series x − x³/3 + … + x¹³/13 is exact to rounding (the
-/// next term is ≤ 2⁻⁵⁶/15 of x). The tables hold atan c and π/2 − atan c in
-/// double-double; the result rounds once, after x's own rounding (i·d and
-/// i·n carry at most 3 more bits than d and n).
+/// atan(n/d), or π/2 − atan(n/d) when `co`, for −1/128 ≤ n/d ≤ 1 (d > 0),
+/// with one division and no branch: q = 64 n/d, i = round(q), w = q − i
+/// (exact, |w| ≤ ½), atan(n/d) = atan(i/64) + Σ_{k=1..8} b_k wᵏ (Taylor
+/// about i/64, truncation ≤ 2⁻⁵⁷ of the value, `atan_table.rs`).
 #[inline(always)]
 pub(crate) fn atan_ratio(n: f64, d: f64, co: bool) -> f64 {
-    let t = 16.0 * n;
-    let i = usize::from(t >= d)
-        + usize::from(t >= 3.0 * d)
-        + usize::from(t >= 5.0 * d)
-        + usize::from(t >= 7.0 * d)
-        + usize::from(t >= 9.0 * d)
-        + usize::from(t >= 11.0 * d)
-        + usize::from(t >= 13.0 * d)
-        + usize::from(t >= 15.0 * d);
-    let c = i as f64;
-    let x = (8.0 * n - c * d) / (8.0 * d + c * n);
-    let z = x * x;
-    let z2 = z * z;
-    let z4 = z2 * z2;
-    // atan x = x + x z q(z), q = −1/3 + z/5 − z²/7 + z³/9 − z⁴/11 + z⁵/13 (Estrin).
-    let q = (-1.0 / 3.0 + z * (1.0 / 5.0))
-        + z2 * (-1.0 / 7.0 + z * (1.0 / 9.0))
-        + z4 * (-1.0 / 11.0 + z * (1.0 / 13.0));
-    let (hi, lo, xs) = if co {
-        (COATAN_HI[i], COATAN_LO[i], -x)
+    const ROUND: f64 = 6_755_399_441_055_744.0;
+    let q = (64.0 * n) / d;
+    let t = q + ROUND;
+    let i = ((t.to_bits() as usize) & 127).min(64);
+    let w = q - (t - ROUND);
+    let node = &ATAN_NODES[i];
+    let b = &node.b;
+    let w2 = w * w;
+    let w4 = w2 * w2;
+    // Σ b_k wᵏ = b₁w + w²(b₂ + b₃w + …): b₁w is exact at i = 0 (b₁ = 1/64),
+    // where atan itself is O(w); Estrin for the rest.
+    let p = ((b[1] + b[2] * w) + w2 * (b[3] + b[4] * w)) + w4 * ((b[5] + b[6] * w) + w2 * b[7]);
+    let tail = w2 * p;
+    let lin = b[0] * w;
+    if co {
+        node.co_hi + ((node.co_lo - tail) - lin)
     } else {
-        (ATAN_HI[i], ATAN_LO[i], x)
-    };
-    hi + ((lo + xs * z * q) + xs)
+        node.hi + ((node.lo + tail) + lin)
+    }
 }
 
 /// am on [0, K] from (sn, cn) at v ∈ [0, K/2] (v may be a hair below 0):
@@ -112,7 +56,7 @@ mod tests {
 
     /// The kernel against libm's atan2 (≤ 1 ulp itself) on 200 000 ratios
     /// uniform in angle, near 0 and near 1, and at the interval borders
-    /// (2i − 1)/16: within 1.5 ulp of libm (measured 1.0), so within 2.5 of
+    /// (2i + 1)/128: within 1.5 ulp of libm (measured 1.0), so within 2.5 of
     /// the truth; the am table (mpmath) bounds the whole amplitude more
     /// tightly.
     #[test]
@@ -152,9 +96,9 @@ mod tests {
             check(s, c);
             check(s * 3.7, c * 3.7);
         }
-        for k in [1.0, 3.0, 5.0, 7.0, 9.0, 11.0, 13.0, 15.0] {
+        for k in 0..64 {
             for j in -4..=4 {
-                let x = k / 16.0 * (1.0 + f64::from(j) * f64::EPSILON);
+                let x = f64::from(2 * k + 1) / 128.0 * (1.0 + f64::from(j) * f64::EPSILON);
                 check(x, 1.0);
                 check(1.0, 1.0 / x);
             }

@@ -3,6 +3,9 @@
 use super::Modulus;
 use super::complete::{ellip_e, ellip_k};
 use super::half_argument::{e_half_argument, f_half_argument};
+use super::near_one_coeffs::{
+    A, ALPHA, BETA, Q1, Q2, Q3, Q4, Q5, Q6, Q7, Q8, R1, R2, R3, R4, R5, R6, R7,
+};
 
 /// π split as a double-double: `PI_HI + PI_LO` = π to ~1e-32.
 pub(crate) const PI_HI: f64 = core::f64::consts::PI;
@@ -137,11 +140,78 @@ fn delta(s: f64, c: f64, mc: f64) -> f64 {
     (c * c + mc * s * s).sqrt()
 }
 
+/// ε = m₁ tan²φ up to which [`f_near_one`] and [`e_near_one`] are used
+/// (with tan φ ≥ 2).
+const NEAR_ONE_EPS: f64 = 1.0 / 64.0;
+
+/// Whether r (sin r = s, cos r = c ≥ 0) lies where ε = m₁ tan²r ≤ 1/64 and
+/// tan r ≥ 2, the region of [`f_near_one`] and [`e_near_one`].
+#[inline(always)]
+fn near_one(s: f64, c: f64, mc: f64) -> bool {
+    c <= 0.5 * s && mc * (s * s) <= NEAR_ONE_EPS * (c * c)
+}
+
+/// p(m₁) by Horner, coefficient of m₁⁰ first.
+#[inline(always)]
+fn horner(p: &[f64], x: f64) -> f64 {
+    let mut acc = 0.0;
+    let mut k = p.len();
+    while k > 0 {
+        k -= 1;
+        acc = p[k] + x * acc;
+    }
+    acc
+}
+
+/// F for ε = m₁ tan²φ ≤ 1/64 and tan φ ≥ 2 (so m₁ ≤ 1/256): the binomial
+/// series of (1 + m₁ tan²θ)^{−1/2} integrated term by term,
+///
+/// ```text
+/// F = A(m₁) asinh(tan φ) + (1/sin φ) Σ_{i=1..8} εⁱ Q_i(m₁),   A = 2K(m₁)/π
+/// ```
+/// (derivation and coefficients: `tests/data/gen_special_near_one.py`,
+/// truncation ≤ 4e-19 of F). asinh(tan φ) = ln((1 + sin φ)/cos φ), one
+/// logarithm of an exactly divided ratio ≥ 2 + √5, and A − 1 = O(m₁) and
+/// the sum (≤ 1/64 of F) are added to it last. Near m = 1 with φ away
+/// from π/2 by more than ~k′ this replaces four to six halvings (each a
+/// division and two square roots).
+#[inline(always)]
+fn f_near_one(s: f64, c: f64, mc: f64) -> f64 {
+    let eps = mc * (s * s) / (c * c);
+    let (e2, e4) = (eps * eps, (eps * eps) * (eps * eps));
+    let q = |a: &[f64], b: &[f64]| horner(a, mc) + eps * horner(b, mc);
+    let corr = eps * ((q(&Q1, &Q2) + e2 * q(&Q3, &Q4)) + e4 * (q(&Q5, &Q6) + e2 * q(&Q7, &Q8)));
+    let i0 = ((1.0 + s) / c).ln();
+    i0 + (mc * horner(&A[1..], mc) * i0 + corr / s)
+}
+
+/// E for ε = m₁ tan²φ ≤ 1/64 and tan φ ≥ 2, as [`f_near_one`] with the
+/// series of (1 + m₁ tan²θ)^{1/2}:
+///
+/// ```text
+/// E = sin φ + m₁ (α(m₁) asinh(tan φ) + β(m₁) sin φ + (1/sin φ) Σ_{i=1..7} εⁱ R_i(m₁))
+/// ```
+/// (α, β, R_i: `tests/data/gen_special_near_one.py`, truncation ≤ 1e-18 of
+/// E); everything after sin φ is O(m₁ ln(1/m₁)) and is added last.
+#[inline(always)]
+fn e_near_one(s: f64, c: f64, mc: f64) -> f64 {
+    let eps = mc * (s * s) / (c * c);
+    let (e2, e4) = (eps * eps, (eps * eps) * (eps * eps));
+    let r = |a: &[f64], b: &[f64]| horner(a, mc) + eps * horner(b, mc);
+    let corr = eps * ((r(&R1, &R2) + e2 * r(&R3, &R4)) + e4 * (r(&R5, &R6) + e2 * horner(&R7, mc)));
+    let i0 = ((1.0 + s) / c).ln();
+    s + mc * ((horner(&ALPHA[1..], mc) * i0 + horner(&BETA[1..], mc) * s) + corr / s)
+}
+
 /// F on 0 ≤ r ≤ π/2 from sin r, cos r ≥ 0: Δ = √(c² + m₁ s²) (never
-/// 1 − m s², which cancels), then [`f_half_argument`].
+/// 1 − m s², which cancels), then [`f_half_argument`], or [`f_near_one`]
+/// where m₁ tan²r ≤ 1/64 and tan r ≥ 2.
 #[inline(always)]
 pub(crate) fn f_reduced(s: f64, c: f64, modulus: Modulus) -> f64 {
     let (m, mc) = (modulus.m(), modulus.complement());
+    if near_one(s, c, mc) {
+        return f_near_one(s, c, mc);
+    }
     let d = delta(s, c, mc);
     if folds(s, c, mc) {
         // sin ψ = c/Δ, cos ψ = k′s/Δ, Δ(ψ) = k′/Δ: one division.
@@ -156,6 +226,9 @@ pub(crate) fn f_reduced(s: f64, c: f64, modulus: Modulus) -> f64 {
 #[inline(always)]
 pub(crate) fn e_reduced(s: f64, c: f64, modulus: Modulus) -> f64 {
     let (m, mc) = (modulus.m(), modulus.complement());
+    if near_one(s, c, mc) {
+        return e_near_one(s, c, mc);
+    }
     let d = delta(s, c, mc);
     if folds(s, c, mc) {
         let (kc, inv) = (mc.sqrt(), 1.0 / d);
@@ -180,7 +253,13 @@ pub(crate) fn e_reduced(s: f64, c: f64, modulus: Modulus) -> f64 {
 /// Fukushima 2010) through sn²(u/2) = (1 − cn)/(1 + dn) (DLMF 22.6.19–21)
 /// until sin² ≤ 0.07, where a 15-term series in sin² (P_k the coefficients
 /// of ((1 − y)(1 − my))^{−1/2}) gives F(u/2ⁿ); near π/2 the complementary
-/// amplitude folds F(r) to K − F(ψ).
+/// amplitude folds F(r) to K − F(ψ). Near m = 1, where m₁ tan²r ≤ 1/64 and
+/// tan r ≥ 2, the binomial series in m₁ tan²θ integrated term by term
+/// replaces the halvings:
+///
+/// ```text
+/// F(r, k) = A(m₁) asinh(tan r) + (1/sin r) Σ_{i=1..8} (m₁ tan²r)ⁱ Q_i(m₁),   A = 2K(k′)/π
+/// ```
 ///
 /// # Special cases
 /// NaN or infinite φ gives NaN. F(0, k) = 0; F(φ, 0) = φ; F is odd in φ.
@@ -234,7 +313,9 @@ pub fn ellip_f(phi: f64, modulus: Modulus) -> f64 {
 /// little in E), H taken there from its Maclaurin
 /// series in sin², and doubled back by a formula of positive terms (from
 /// DLMF 22.16.27), so nothing cancels even as m → 1. Near r = π/2 the
-/// complementary amplitude folds E(r) to E − E(ψ) + m sin r sin ψ.
+/// complementary amplitude folds E(r) to E − E(ψ) + m sin r sin ψ. Where
+/// m₁ tan²r ≤ 1/64 and tan r ≥ 2, E(r) = sin r + m₁(α(m₁) asinh(tan r) +
+/// β(m₁) sin r + Σ (m₁ tan²r)ⁱ R_i(m₁)/sin r) instead, as for [`ellip_f`].
 ///
 /// # Special cases
 /// NaN or infinite φ gives NaN. E(0, k) = 0; E(φ, 0) = φ; E(φ, 1) = sin φ on

@@ -52,7 +52,14 @@
 //!   R_F (three square roots a duplication step; 40 → 30 ns uniform, 55 →
 //!   45 ns extreme), at a small cost in accuracy (1.07 → 1.08 ulp norm. on
 //!   the table, 0.93 → 1.34 on 20 000 random points: every halving rounds
-//!   sin², and F inherits all of it). sin r, cos r come from fdlibm's
+//!   sin², and F inherits all of it). Near m = 1, where ε = m₁ tan²r ≤
+//!   1/64 and tan r ≥ 2 (φ nearer π/2 than 1.1 but not within ~k′ of it),
+//!   F and E(φ) come instead from the binomial series of
+//!   (1 + m₁ tan²θ)^{∓1/2} integrated term by term: one logarithm,
+//!   asinh tan r = ln((1 + sin r)/cos r), plus O(m₁) corrections in ε and
+//!   m₁ (`tests/data/gen_special_near_one.py`), in place of four to six
+//!   halvings (extreme set: F 47 → 36 ns, E(φ) 50 → 37 ns; issue 9, fifth
+//!   pass). sin r, cos r come from fdlibm's
 //!   polynomial kernels inline (≤ 0.81 ulp) rather than two libm calls,
 //!   which alone took ~15 of ~40 ns in `ellip_f`.
 //! - **E(φ)**: the same reduction and fold, then E(r) = sin r + m₁ H(r),
@@ -95,10 +102,12 @@
 //!
 //!   am = jπ + am(r), continuous, with am(r) from the quarter-period
 //!   values by a branch-free atan of a ratio in [0, 1]: 2 atan(sn/(1 + cn))
-//!   on [0, K/2], π/2 − atan(k′ sn s/cn s) at K − s (eight comparisons
-//!   place the ratio next to i/8, then one division and the Taylor series
-//!   of atan to x¹³), so am waits neither for the shift's division and
-//!   square root nor for a branch. Descending Landen
+//!   on [0, K/2], π/2 − atan(k′ sn s/cn s) at K − s (q = 64 n/d by one
+//!   division, the node i = round q, and atan's Taylor polynomial of
+//!   degree 8 about i/64 in q − i from a generated 65-node table,
+//!   `tests/data/gen_special_atan.py`; 4–5 ns less than the nine nodes
+//!   found by eight comparisons before), so am waits neither for the
+//!   shift's division and square root nor for a branch. Descending Landen
 //!   (AGM) was not used: its cn = cos φ₀ loses all digits near K/2 as
 //!   m → 1. [`FixedModulus`] holds K, E, the reduction constants, the
 //!   series coefficients and the Landen chain for [0, K/2], so that many u
@@ -135,12 +144,12 @@
 //! |---|---|---|---|---|---|---|
 //! | K | 0.18 | 0.59 | 0.74 | – | – | – |
 //! | E | 0.14 | 0.49 | 0.50 | – | – | – |
-//! | F(φ) | 0.28 | 1.37 | 3.85 | 0.18 | 0.81 | 1.08 |
+//! | F(φ) | 0.28 | 1.31 | 3.85 | 0.17 | 0.81 | 1.08 |
 //! | E(φ) | 0.21 | 0.90 | 1.53 | 0.11 | 0.58 | 1.14 |
 //! | sn | 0.17 | 88 | 1.5e16 | 0.08 | 0.50 | 1.02 |
 //! | cn | 0.65 | 4.6e13 | 2.4e16 | 0.05 | 0.45 | 1.25 |
 //! | dn | 0.39 | 32 | 125 | 0.05 | 0.47 | 0.89 |
-//! | am | 0.20 | 1.03 | 1.72 | 0.14 | 0.59 | 0.95 |
+//! | am | 0.20 | 1.01 | 2.01 | 0.14 | 0.59 | 1.00 |
 //! | ε | 0.19 | 1.05 | 1.58 | 0.12 | 0.96 | 1.58 |
 //!
 //! [`FixedModulus`] measures the same or better (sn 0.83, cn 1.16). The m-derivatives (tables by
@@ -159,21 +168,22 @@
 //! # Performance
 //! ns per call on the project's shared 2-core machine (x86-64 baseline, no
 //! FMA), interleaved minimum over 1024 inputs, with `ellip` 1.2.3 in the
-//! same passes (medians of three runs at load average 6, issue 9's fourth
+//! same passes (medians of three runs at load average 5–6, issue 9's fifth
 //! pass); "extreme" is m₁ = 10^−U(0,15), φ = π/2 − 10^−U(0,8),
 //! u ∈ [0, 100]:
 //!
 //! | function | uniform | ellip | extreme | ellip |
 //! |---|---|---|---|---|
-//! | K | 4.9 | 11.1 | 11.6 | 20.0 |
-//! | E | 4.8 | 12.7 | 8.9 | 34.3 |
-//! | F(φ) | 29.7 | 68.0 | 46.7 | 94.4 |
-//! | E(φ) | 39.6 | 103.7 | 50.2 | 130.1 |
-//! | jacobi | 58.8 | – | 77.3 | – |
-//! | [`FixedModulus::jacobi`] (128 u per modulus) | 20.1 | – | 22.5 | – |
+//! | K | 5.0 | 10.9 | 11.6 | 19.5 |
+//! | E | 4.8 | 12.6 | 8.9 | 33.8 |
+//! | F(φ) | 30.0 | 68.1 | 35.8 | 94.2 |
+//! | E(φ) | 39.9 | 103.8 | 37.0 | 129.5 |
+//! | jacobi | 55.4 | – | 69.2 | – |
+//! | [`FixedModulus::jacobi`] (128 u per modulus) | 20.2 | – | 22.6 | – |
 //!
-//! Reproduce with `cargo bench --bench special -- --warm-up-time 1
-//! --measurement-time 2`; criterion's means and the history are in
+//! Reproduce with `cargo bench --bench special -- zzzz` (the interleaved
+//! and replayed minima only) or `-- --warm-up-time 1 --measurement-time 2`
+//! (criterion as well); criterion's means and the history are in
 //! `docs/PERFORMANCE.md`.
 //!
 //! # Errors
@@ -199,7 +209,10 @@ mod carlson;
 #[rustfmt::skip]
 mod carlson_series;
 #[rustfmt::skip]
+mod atan_table;
+#[rustfmt::skip]
 mod coeffs;
+
 mod complete;
 mod derivatives;
 mod duplication;
@@ -211,6 +224,8 @@ mod h_series;
 mod incomplete;
 mod jacobi;
 mod landen;
+#[rustfmt::skip]
+mod near_one_coeffs;
 #[rustfmt::skip]
 mod maclaurin_coeffs;
 mod modulus;
