@@ -219,13 +219,14 @@ impl PhaseDiagram {
         &self.lines
     }
 
-    /// Whether the lines map every loop but the last: a pop-out count of
-    /// n − 1, as the reference spring of n = 2, 3, 4, 6 has. The lines are
-    /// traced from the pop-outs of one reference spring
-    /// (`examples/phase_diagram`: θ0 = 89.8°, A/B = 10, ν = 0.05); where it
-    /// has fewer (n = 8: 3 of 7 loops pop out there, the others unloop
-    /// without a fold), other loops can pop out at other scenes (pulls of
-    /// n = 8 find up to 6), and [`Self::pop_outs`] is a lower bound.
+    /// Whether the lines map every loop but the last: n − 1 pop-outs, as
+    /// many as a spring of n coils can have. The lines are traced from the
+    /// pop-outs of a reference spring (`examples/phase_diagram`: θ0 = 89.8°,
+    /// A/B = 10, ν = 0.05), which for n = 2, 3, 4, 6 has n − 1; where it has
+    /// fewer (n = 8: 3 of 7 loops pop out there, the others unloop without
+    /// a fold) the others are seeded from a scene where they pop out
+    /// (n = 8: θ0 = 89.5°, A/B = 50). Until every loop is mapped,
+    /// [`Self::pop_outs`] counts the mapped ones: a lower bound.
     #[must_use]
     pub fn is_complete(&self) -> bool {
         self.pop_out_count() + 1 >= self.coils as usize
