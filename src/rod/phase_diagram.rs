@@ -17,7 +17,8 @@ pub struct CuspAt {
     /// Poisson ratio ν.
     pub nu: f64,
     /// The force of the meeting folds, F/((2πn)²B) (NaN where it was not
-    /// recorded: the tips of the committed n = 2, 3, 4, 6 lines).
+    /// recorded: the single point of a line at fixed ν whose pop-out does
+    /// not exist up to A/B = 100, or whose θ0_c is not known there).
     pub force_scaled: f64,
 }
 
@@ -357,8 +358,8 @@ impl PhaseDiagram {
 
     /// Reads [`PhaseDiagram::to_csv`]'s format back (a new line starts
     /// where the pop-out, the fixed parameter or its value changes). The
-    /// format without `ends` (the committed diagrams of n = 2, 3, 4, 6,
-    /// whose lines are complete) is read too: a line's first end is a
+    /// format without `ends` (the first committed diagrams of n = 2, 3, 4,
+    /// 6, whose lines are complete) is read too: a line's first end is a
     /// [`LineEnd::Tip`] if its first point is at 90° (to 1e-9 rad), so is
     /// its last end for a line at fixed A/B, every other end a
     /// [`LineEnd::Range`].
