@@ -4,6 +4,7 @@
 //!
 //! ```sh
 //! cargo run --release --example phase_diagram [-- --coils N] [--out DIR] [--compute]
+//! cargo run --release --example phase_diagram -- --coils 8 --extend docs/data/phase_diagram_n8.csv
 //! cargo run --release --example phase_diagram -- --check   # convergence, docs/ACCURACY.md
 //! cargo run --release --example phase_diagram -- --scene 89.8,10,0.05 [--scene …]
 //! ```
@@ -17,6 +18,12 @@
 //! ν = 0.05 and at the other ν of the reading grid, reached along A/B =
 //! 100) and in ν (at A/B = 10): `phase_diagram_n<N>.csv` and `.svg` in the
 //! output folder (default `$CARGO_TARGET_DIR/hockle`, else `target/hockle`).
+//! Where a spring loses fewer loops by a fold at the reference than it can
+//! (n = 8: 3 of 7), the other pop-outs are seeded from a scene where they
+//! exist (`SEEDS`: n = 8 at θ0 = 89.5°, A/B = 50): their cusps in θ0 at that
+//! A/B start the same lines. `--extend FILE` takes the lines of a diagram
+//! computed before (the committed n = 8 file of the reference pop-outs)
+//! instead of recomputing them, and adds the seeded pop-outs' lines.
 //!
 //! `--pull F` pulls each `--scene` too (the adaptive default rod, from rest
 //! to F/((2πn)²B) = F) and prints, after its line, one line
@@ -62,11 +69,35 @@ const NU_MAX: f64 = 0.49;
 /// The other ν of the reading grid (lines at fixed ν).
 const NU_GRID: [f64; 11] = [-0.9, -0.6, -0.4, -0.2, -0.1, 0.0, 0.1, 0.15, 0.2, 0.3, 0.45];
 const HALF_PI: f64 = core::f64::consts::FRAC_PI_2;
+/// Scenes (coils, θ0 in degrees, A/B; ν = 0.05) where loops pop out that
+/// do not pop out at the reference spring: n = 8 has 3 pop-outs there and
+/// 7 at (89.5°, 50) in an adaptive pull to F/((2πn)²B) = 30
+/// (docs/ACCURACY.md). Their lines are traced from the cusps of those
+/// pop-outs at the seed's A/B.
+const SEEDS: [(u32, f64, f64); 1] = [(8, 89.5, 50.0)];
+/// The force the seeds are pulled to, F/((2πn)²B): at large A/B near 90°
+/// the pop-outs come at higher forces than at the reference spring.
+const SEED_FORCE: f64 = 30.0;
+/// The mesh of the pull that finds the seeds' pop-outs: on 24 intervals
+/// the pull to 30 at (89.5°, 50) pairs 42 folds (the high-force part is
+/// not resolved), on 48 the seven of the adaptive pull.
+const SEED_INTERVALS: usize = 48;
+/// A seed's cusp within this of a known pop-out's θ0_c read off its lines
+/// (degrees) is that pop-out: the reading is within 0.061° of the lines and
+/// measured 0.0005–0.005° from the cusps at n = 8's seed, where the
+/// nearest cusp of another pop-out is 0.38° away.
+const KNOWN_CUSP_DEG: f64 = 0.03;
+/// The same cusp on 48 and on 24 intervals (degrees): measured 2e-5° at
+/// n = 8's seed, where two distinct cusps are 0.038° apart.
+const SAME_CUSP_DEG: f64 = 1e-3;
+/// The same cusp's force F/((2πn)²B) on 48 and on 24 intervals: measured
+/// within 1e-5 at n = 8's seed.
+const SAME_CUSP_FORCE: f64 = 1e-3;
 /// Mesh intervals: cusps converged to 6e-8 rad against 96 (docs/ACCURACY.md).
 const INTERVALS: usize = 24;
 
 fn usage() -> String {
-    "usage: phase_diagram [--coils N] [--out DIR] [--compute | --check] [--scene THETA0_DEG,A_OVER_B,NU]… [--pull F]".into()
+    "usage: phase_diagram [--coils N] [--out DIR] [--compute | --extend CSV | --check] [--scene THETA0_DEG,A_OVER_B,NU]… [--pull F]".into()
 }
 
 fn at(p: &FoldPoint) -> CuspAt {
@@ -97,8 +128,8 @@ struct Traced {
 /// A cusp curve from `start` in `second` to `to`, or to θ0 = 90°. A run
 /// that fails (Newton, the tangent's angle, a location, the step limit) is
 /// resumed from its last point with a quarter of the largest step, at most
-/// three times; then the curve ends [`LineEnd::Unfinished`] with the last
-/// run's reason.
+/// three times; then, or when Newton cannot correct a resumption's start,
+/// the curve ends [`LineEnd::Unfinished`] with the last run's reason.
 fn trace(
     search: &CuspSearch,
     family: &NikolaiRod,
@@ -118,7 +149,7 @@ fn trace(
     for attempt in 0..4 {
         let ds = 0.05 * direction;
         let mut last: Option<FoldPoint> = None;
-        let curve = search.cusp_curve(
+        let curve = match search.cusp_curve(
             family,
             &start,
             (Rod::THETA0, second),
@@ -143,7 +174,22 @@ fn trace(
                 last = Some(p.clone());
                 ControlFlow::Continue(())
             },
-        )?;
+        ) {
+            Ok(curve) => curve,
+            // a resumed run whose start (the last point of a failed run)
+            // Newton cannot correct: the line ends there
+            Err(e) if attempt > 0 => {
+                eprintln!("  cusp curve in parameter {second} from {from:.4}: no resumption: {e}");
+                reason = match e {
+                    hockle::Error::NewtonDiverged { .. } | hockle::Error::NewtonNotConverged { .. } => {
+                        Unfinished::Newton
+                    }
+                    _ => Unfinished::Other,
+                };
+                break;
+            }
+            Err(e) => return Err(e.into()),
+        };
         steps += curve.accepted();
         let last = last.ok_or("empty cusp curve")?;
         let done = match last.kind() {
@@ -201,39 +247,63 @@ fn both_ways(pop_out: usize, fixed: Fixed, down: Traced, up: Traced) -> CuspLine
     }
 }
 
-/// Every cusp line of pop-out `i`.
-fn pop_out_lines(
-    coils: u32,
-    i: usize,
-    max_fold: &Solution,
-) -> Result<Vec<CuspLine>, Box<dyn Error + Send + Sync>> {
+/// The search every line is traced with.
+fn line_search() -> CuspSearch {
+    CuspSearch::new()
+        .intervals(INTERVALS)
+        .curve_ds_max(0.5)
+        .curve_max_angle(CURVE_MAX_ANGLE)
+}
+
+/// The family of the reference spring of n coils.
+fn reference_family(coils: u32) -> Result<NikolaiRod, Box<dyn Error + Send + Sync>> {
     let rod = Rod::new(
         coils,
         THETA0_DEG.to_radians(),
         Stiffness::nikolai(A_OVER_B, NU)?,
     )?;
-    let family = NikolaiRod::new(rod, NU)?;
-    let search = CuspSearch::new()
-        .intervals(INTERVALS)
-        .curve_ds_max(0.5)
-        .curve_max_angle(CURVE_MAX_ANGLE);
+    Ok(NikolaiRod::new(rod, NU)?)
+}
+
+/// Every cusp line of reference pop-out `i`, from its maximum-force fold
+/// at the reference spring.
+fn pop_out_lines(
+    coils: u32,
+    i: usize,
+    max_fold: &Solution,
+) -> Result<Vec<CuspLine>, Box<dyn Error + Send + Sync>> {
+    let family = reference_family(coils)?;
     let Followed::Cusp(cusp) =
-        search.follow(&family, max_fold, Rod::THETA0, 45_f64.to_radians())?
+        line_search().follow(&family, max_fold, Rod::THETA0, 45_f64.to_radians())?
     else {
         return Err(format!("pop-out {i}: no cusp between θ0 = 45° and {THETA0_DEG}°").into());
     };
-    let c0 = cusp.extended().clone();
+    lines_through(&family, i, cusp.extended(), A_OVER_B)
+}
+
+/// Every cusp line of pop-out `i` through its cusp `c0` (an extended
+/// solution of `family`'s fold problem, at ν = 0.05): the line in A/B at
+/// ν = 0.05 (down to the tip, up to A_MAX), the line in ν at c0's A/B, and
+/// the reading grid (from A_MAX along ν to each ν of the grid, then in A/B
+/// down to the tip). `a_over_b` is c0's A/B.
+fn lines_through(
+    family: &NikolaiRod,
+    i: usize,
+    c0: &Solution,
+    a_over_b: f64,
+) -> Result<Vec<CuspLine>, Box<dyn Error + Send + Sync>> {
+    let search = line_search();
     let mut lines = Vec::new();
     // In A/B at ν = 0.05: down to the tip at 90°, up to A_MAX.
-    let down = trace(&search, &family, &c0, NikolaiRod::LN_A_OVER_B, A_MIN.ln())?;
-    let up = trace(&search, &family, &c0, NikolaiRod::LN_A_OVER_B, A_MAX.ln())?;
+    let down = trace(&search, family, c0, NikolaiRod::LN_A_OVER_B, A_MIN.ln())?;
+    let up = trace(&search, family, c0, NikolaiRod::LN_A_OVER_B, A_MAX.ln())?;
     let end = up.last.clone();
     lines.push(both_ways(i, Fixed::Nu(NU), down, up));
-    // In ν at A/B = 10.
+    // In ν at c0's A/B (10 for the reference pop-outs).
     let fine = search.curve_ds_max(0.25);
-    let down = trace(&fine, &family, &c0, NikolaiRod::NU, NU_MIN)?;
-    let up = trace(&fine, &family, &c0, NikolaiRod::NU, NU_MAX)?;
-    lines.push(both_ways(i, Fixed::AOverB(A_OVER_B), down, up));
+    let down = trace(&fine, family, c0, NikolaiRod::NU, NU_MIN)?;
+    let up = trace(&fine, family, c0, NikolaiRod::NU, NU_MAX)?;
+    lines.push(both_ways(i, Fixed::AOverB(a_over_b), down, up));
     // The reading grid: from (A_MAX, 0.05) along ν to each ν, then in A/B
     // down to the tip.
     let end = end.ok_or("the line at ν = 0.05 did not reach A/B = 100")?;
@@ -255,11 +325,10 @@ fn pop_out_lines(
                 lines.push(beyond(i, nu, gone));
                 continue;
             };
-            let along_nu = trace(&search, &family, &start, NikolaiRod::NU, nu)?;
+            let along_nu = trace(&search, family, &start, NikolaiRod::NU, nu)?;
             match along_nu.last {
                 Some(s) => {
-                    let mut line =
-                        trace(&search, &family, &s, NikolaiRod::LN_A_OVER_B, A_MIN.ln())?;
+                    let mut line = trace(&search, family, &s, NikolaiRod::LN_A_OVER_B, A_MIN.ln())?;
                     line.points.reverse();
                     lines.push(CuspLine {
                         pop_out: i,
@@ -294,6 +363,88 @@ fn beyond(i: usize, nu: f64, end: LineEnd) -> CuspLine {
         }],
         ends: [end, end],
     }
+}
+
+/// A seeded pop-out: the family at its seed, its cusp there (an extended
+/// solution) and the seed's A/B.
+type Seeded = (NikolaiRod, Solution, f64);
+
+/// The pop-outs at the [`SEEDS`] of `coils` that `known`'s lines do not
+/// map: the family at the seed, the pop-out's cusp at the seed's A/B (its
+/// maximum-force fold continued down in θ0, an extended solution on
+/// [`INTERVALS`]) and that A/B. The pop-outs are found by a pull on [`SEED_INTERVALS`]
+/// and each cusp is taken from the pull on [`INTERVALS`] whose cusp is the
+/// same ([`SAME_CUSP_DEG`]).
+fn seeded(coils: u32, known: &PhaseDiagram) -> Result<Vec<Seeded>, Box<dyn Error + Send + Sync>> {
+    let mut out: Vec<Seeded> = Vec::new();
+    for &(_, t, ab) in SEEDS.iter().filter(|s| s.0 == coils) {
+        let rod = Rod::new(coils, t.to_radians(), Stiffness::nikolai(ab, NU)?)?;
+        let family = NikolaiRod::new(rod, NU)?;
+        let cusps = |n: usize| -> Result<Vec<FoldPoint>, Box<dyn Error + Send + Sync>> {
+            let search = CuspSearch::new().intervals(n);
+            let mut found = Vec::new();
+            for [max, _] in search.pop_outs(&family, SEED_FORCE)? {
+                if let Ok(Followed::Cusp(c)) =
+                    search.follow(&family, &max, Rod::THETA0, 45_f64.to_radians())
+                {
+                    found.push(*c);
+                }
+            }
+            Ok(found)
+        };
+        let fine = cusps(SEED_INTERVALS)?;
+        let coarse = cusps(INTERVALS)?;
+        eprintln!(
+            "seed θ0 = {t}°, A/B = {ab}, ν = {NU}: {} pop-outs on {SEED_INTERVALS} intervals",
+            fine.len()
+        );
+        for c in fine {
+            let th = c.parameter().to_degrees();
+            let near = |a: f64, b: f64, tol: f64| (a - b).abs() < tol;
+            if let Some(i) = (0..known.pop_out_count()).find(|&i| {
+                let Ok(r) = known.cusp_theta0(i, ab, NU) else {
+                    return false;
+                };
+                r.start().to_degrees() - KNOWN_CUSP_DEG < th
+                    && th < r.end().to_degrees() + KNOWN_CUSP_DEG
+            }) {
+                eprintln!("  cusp at θ0 = {th:.5}°: pop-out {i}");
+                continue;
+            }
+            let theta = |s: &Solution| s.parameters()[Rod::THETA0].to_degrees();
+            if out
+                .iter()
+                .any(|(f, s, _)| f.rod() == family.rod() && near(theta(s), th, SAME_CUSP_DEG))
+            {
+                continue;
+            }
+            // the same cusp: θ0 and the force (two cusps of n = 8's seed
+            // lie 2.5e-5° apart in θ0, at forces 0.62 and 1.79)
+            let f = c.fold_parameter();
+            let index = known.pop_out_count() + out.len();
+            let start = match coarse.iter().find(|q| {
+                near(q.parameter().to_degrees(), th, SAME_CUSP_DEG)
+                    && near(q.fold_parameter(), f, SAME_CUSP_FORCE)
+            }) {
+                Some(c24) => {
+                    eprintln!(
+                        "  cusp at θ0 = {th:.5}°, f = {f:.5}: new, pop-out {index} ({:.6}°, f = {:.6} on {INTERVALS} intervals)",
+                        c24.parameter().to_degrees(),
+                        c24.fold_parameter()
+                    );
+                    c24.extended().clone()
+                }
+                None => {
+                    eprintln!(
+                        "  cusp at θ0 = {th:.5}°, f = {f:.5}: new, pop-out {index}, not found on {INTERVALS} intervals: traced on {SEED_INTERVALS}"
+                    );
+                    c.extended().clone()
+                }
+            };
+            out.push((family, start, ab));
+        }
+    }
+    Ok(out)
 }
 
 /// The convergence and consistency checks of docs/ACCURACY.md, on the
@@ -350,33 +501,59 @@ fn check(coils: u32) -> Result<(), Box<dyn Error + Send + Sync>> {
     Ok(())
 }
 
-fn compute(coils: u32) -> Result<PhaseDiagram, Box<dyn Error + Send + Sync>> {
+/// The diagram of n coils: the lines of the reference spring's pop-outs
+/// (or those of `reference`, a diagram computed before), then those of the
+/// pop-outs at the seeds that they do not map.
+fn compute(
+    coils: u32,
+    reference: Option<PhaseDiagram>,
+) -> Result<PhaseDiagram, Box<dyn Error + Send + Sync>> {
     let clock = Instant::now();
-    let rod = Rod::new(
-        coils,
-        THETA0_DEG.to_radians(),
-        Stiffness::nikolai(A_OVER_B, NU)?,
-    )?;
-    let family = NikolaiRod::new(rod, NU)?;
-    let pops = CuspSearch::new()
-        .intervals(INTERVALS)
-        .pop_outs(&family, 3.0)?;
-    eprintln!(
-        "n = {coils}: {} pop-outs at θ0 = {THETA0_DEG}°, A/B = {A_OVER_B}, ν = {NU}",
-        pops.len()
-    );
+    let mut lines = Vec::new();
+    if let Some(d) = reference {
+        eprintln!(
+            "n = {coils}: the lines of {} pop-outs read from --extend",
+            d.pop_out_count()
+        );
+        lines.extend(d.lines().iter().cloned());
+    } else {
+        let family = reference_family(coils)?;
+        let pops = CuspSearch::new()
+            .intervals(INTERVALS)
+            .pop_outs(&family, 3.0)?;
+        eprintln!(
+            "n = {coils}: {} pop-outs at θ0 = {THETA0_DEG}°, A/B = {A_OVER_B}, ν = {NU}",
+            pops.len()
+        );
+        let results: Vec<_> = std::thread::scope(|s| {
+            let handles: Vec<_> = pops
+                .iter()
+                .enumerate()
+                .map(|(i, pair)| s.spawn(move || pop_out_lines(coils, i, &pair[0])))
+                .collect();
+            handles
+                .into_iter()
+                .map(|h| h.join().expect("no panic"))
+                .collect()
+        });
+        for r in results {
+            lines.extend(r?);
+        }
+    }
+    let known = PhaseDiagram::new(coils, lines.clone())?;
+    let first = known.pop_out_count();
+    let seeds = seeded(coils, &known)?;
     let results: Vec<_> = std::thread::scope(|s| {
-        let handles: Vec<_> = pops
+        let handles: Vec<_> = seeds
             .iter()
             .enumerate()
-            .map(|(i, pair)| s.spawn(move || pop_out_lines(coils, i, &pair[0])))
+            .map(|(k, (family, c0, ab))| s.spawn(move || lines_through(family, first + k, c0, *ab)))
             .collect();
         handles
             .into_iter()
             .map(|h| h.join().expect("no panic"))
             .collect()
     });
-    let mut lines = Vec::new();
     for r in results {
         lines.extend(r?);
     }
@@ -404,6 +581,7 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
         .join("hockle");
     let (mut coils, mut force, mut scenes, mut checks) = (4_u32, false, Vec::new(), false);
     let mut pull_to: Option<f64> = None;
+    let mut extend: Option<PathBuf> = None;
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
         match arg.as_str() {
@@ -417,6 +595,12 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
                         .filter(|f| *f > 0.0 && f.is_finite())
                         .ok_or(format!("--pull {v}: a finite positive force F/((2πn)²B)"))?,
                 );
+            }
+            "--extend" => {
+                extend = Some(PathBuf::from(
+                    args.next().ok_or("--extend needs a phase-diagram CSV")?,
+                ));
+                force = true;
             }
             "--check" => checks = true,
             "--coils" => {
@@ -465,6 +649,17 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
     } else if let (false, Ok(csv)) = (force, std::fs::read_to_string(&committed)) {
         PhaseDiagram::from_csv(coils, &csv)?
     } else {
+        let reference = match &extend {
+            Some(f) => {
+                let text = std::fs::read_to_string(f)
+                    .map_err(|e| format!("--extend {}: {e}", f.display()))?;
+                Some(
+                    PhaseDiagram::from_csv(coils, &text)
+                        .map_err(|e| format!("--extend {}: {e}", f.display()))?,
+                )
+            }
+            None => None,
+        };
         if !force {
             eprintln!(
                 "no committed diagram for n = {coils} ({} not found; committed: n = 2, 3, 4, 6, 8): \
@@ -475,7 +670,8 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
         // (the folder first: an --out that cannot be written fails now,
         // not after the minutes of the computation)
         std::fs::create_dir_all(&out).map_err(|e| format!("--out {}: {e}", out.display()))?;
-        let d = compute(coils).map_err(|e| format!("computing the diagram of n = {coils}: {e}"))?;
+        let d = compute(coils, reference)
+            .map_err(|e| format!("computing the diagram of n = {coils}: {e}"))?;
         let csv = out.join(format!("phase_diagram_n{coils}.csv"));
         std::fs::write(&csv, d.to_csv())?;
         eprintln!("wrote {}", csv.display());

@@ -73,13 +73,12 @@ pub fn draw(d: &hockle::rod::PhaseDiagram) -> String {
         ((lo - 0.5).floor(), 90.0)
     };
     let on_a = |f: Fixed| matches!(f, Fixed::Nu(v) if v == 0.05);
-    let on_nu = |f: Fixed| matches!(f, Fixed::AOverB(_));
+    let on_nu = |f: Fixed| matches!(f, Fixed::AOverB(v) if (v - 10.0).abs() < 1e-9);
     let mut s = String::new();
     let width = 2.0 * (W + LEFT + 40.0);
     let _ = writeln!(
         s,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{}" font-family="sans-serif" font-size="13">"#,
-        H + TOP + 90.0
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{{HEIGHT}}" font-family="sans-serif" font-size="13">"#
     );
     let _ = writeln!(s, r#"<rect width="100%" height="100%" fill="white"/>"#);
     let _ = writeln!(
@@ -172,7 +171,9 @@ pub fn draw(d: &hockle::rod::PhaseDiagram) -> String {
         x += 150.0;
     }
     s.push_str("</svg>\n");
-    s
+    // as high as the legend's rows need (seven pop-outs take four)
+    let height = (H + TOP + 90.0).max(y + 20.0);
+    s.replacen("{HEIGHT}", &height.to_string(), 1)
 }
 
 #[allow(clippy::too_many_arguments)]

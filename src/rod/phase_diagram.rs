@@ -17,7 +17,8 @@ pub struct CuspAt {
     /// Poisson ratio ν.
     pub nu: f64,
     /// The force of the meeting folds, F/((2πn)²B) (NaN where it was not
-    /// recorded: the tips of the committed n = 2, 3, 4, 6 lines).
+    /// recorded: the single point of a line at fixed ν whose pop-out does
+    /// not exist up to A/B = 100, or whose θ0_c is not known there).
     pub force_scaled: f64,
 }
 
@@ -237,13 +238,14 @@ impl PhaseDiagram {
         &self.lines
     }
 
-    /// Whether the lines map every loop but the last: a pop-out count of
-    /// n − 1, as the reference spring of n = 2, 3, 4, 6 has. The lines are
-    /// traced from the pop-outs of one reference spring
-    /// (`examples/phase_diagram`: θ0 = 89.8°, A/B = 10, ν = 0.05); where it
-    /// has fewer (n = 8: 3 of 7 loops pop out there, the others unloop
-    /// without a fold), other loops can pop out at other scenes (pulls of
-    /// n = 8 find up to 6), and [`Self::pop_outs`] is a lower bound.
+    /// Whether the lines map every loop but the last: n − 1 pop-outs, as
+    /// many as a spring of n coils can have. The lines are traced from the
+    /// pop-outs of a reference spring (`examples/phase_diagram`: θ0 = 89.8°,
+    /// A/B = 10, ν = 0.05), which for n = 2, 3, 4, 6 has n − 1; where it has
+    /// fewer (n = 8: 3 of 7 loops pop out there, the others unloop without
+    /// a fold) the others are seeded from a scene where they pop out
+    /// (n = 8: θ0 = 89.5°, A/B = 50). Until every loop is mapped,
+    /// [`Self::pop_outs`] counts the mapped ones: a lower bound.
     #[must_use]
     pub fn is_complete(&self) -> bool {
         self.pop_out_count() + 1 >= self.coils as usize
@@ -373,8 +375,8 @@ impl PhaseDiagram {
 
     /// Reads [`PhaseDiagram::to_csv`]'s format back (a new line starts
     /// where the pop-out, the fixed parameter or its value changes). The
-    /// format without `ends` (the committed diagrams of n = 2, 3, 4, 6,
-    /// whose lines are complete) is read too: a line's first end is a
+    /// format without `ends` (the first committed diagrams of n = 2, 3, 4,
+    /// 6, whose lines are complete) is read too: a line's first end is a
     /// [`LineEnd::Tip`] if its first point is at 90° (to 1e-9 rad), so is
     /// its last end for a line at fixed A/B, every other end a
     /// [`LineEnd::Range`].

@@ -8,6 +8,7 @@ mod common;
 mod problems;
 
 mod fold_curve;
+mod merged_cusp;
 mod observer;
 mod settings;
 mod stops;
