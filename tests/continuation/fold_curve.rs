@@ -83,10 +83,13 @@ fn bratu_fold_follows_lambda_star_over_l_squared() {
 /// y′ = 0, y(0)³ − a y(0) + b = 0, with a = p₀ + c p₁, b = p₁ − c p₀
 /// (c = `mix`); `analytic` gives the boundary Jacobian (else the solver and
 /// the fold's linearisation take differences). Its folds are 3x² = a, i.e. (a, b) = (3x², 2x³), the curve
-/// 4a³ = 27b², with the cusp at a = b = 0 (x = 0).
-struct Cubic {
-    mix: f64,
-    analytic: bool,
+/// 4a³ = 27b², with the cusp at a = b = 0 (x = 0). `jacobian_error` is
+/// added to the analytic ∂g/∂x (0 for the true Jacobian; `merged_cusp`
+/// skews it).
+pub(crate) struct Cubic {
+    pub(crate) mix: f64,
+    pub(crate) analytic: bool,
+    pub(crate) jacobian_error: f64,
 }
 
 impl Cubic {
@@ -126,7 +129,7 @@ impl Problem for Cubic {
         }
         let (a, _) = self.ab(p);
         let x = y0[0];
-        dg0[(0, 0)] = 3.0 * x * x - a;
+        dg0[(0, 0)] = 3.0 * x * x - a + self.jacobian_error;
         // ∂a/∂p = (1, c), ∂b/∂p = (−c, 1).
         dgp[(0, 0)] = -x - self.mix;
         dgp[(0, 1)] = -self.mix * x + 1.0;
@@ -179,6 +182,7 @@ fn cusp_of_the_cubic_at_the_origin() {
     let p = Cubic {
         mix: 0.0,
         analytic: false,
+        jacobian_error: 0.0,
     };
     let (solver, fold) = cubic_fold(&p, 1.7, &[4.0, 2.0]);
     assert!((fold.parameters()[0] - 3.0).abs() < 1e-8);
@@ -218,6 +222,7 @@ fn turns_and_a_generic_cusp_of_the_rotated_cubic() {
     let p = Cubic {
         mix: 1.0,
         analytic: true,
+        jacobian_error: 0.0,
     };
     let (solver, fold) = cubic_fold(&p, 2.5, &[-1.0, 14.0]);
     assert!((fold.parameters()[0] + 2.0).abs() < 1e-8);
@@ -321,6 +326,7 @@ fn an_observer_stops_at_the_cusp_and_keeps_the_points() {
     let p = Cubic {
         mix: 0.0,
         analytic: true,
+        jacobian_error: 0.0,
     };
     let (solver, fold) = cubic_fold(&p, 1.7, &[4.0, 2.0]);
     let (mut points, mut finished) = (0, None);

@@ -25,47 +25,10 @@
 //! the end of the region of the λ-folds' hysteresis); stepping in steps
 //! shorter than ε/3 it must report the two turns it resolved.
 
-use hockle::bvp::{Collocation, Problem};
+use hockle::bvp::Collocation;
+
+use crate::fold_curve::Cubic;
 use hockle::continuation::{Continuation, FoldContinuation, FoldCurve, FoldPointKind, Termination};
-
-/// The rotated cubic with its boundary Jacobian's ∂g/∂x off by `error`.
-struct SkewedCubic {
-    error: f64,
-}
-
-impl Problem for SkewedCubic {
-    fn dim(&self) -> usize {
-        1
-    }
-    fn parameter_count(&self) -> usize {
-        2
-    }
-    fn boundary_count(&self) -> usize {
-        1
-    }
-    fn rhs(&self, _s: f64, _y: &[f64], _p: &[f64], f: &mut [f64]) {
-        f[0] = 0.0;
-    }
-    fn boundary(&self, y0: &[f64], _y1: &[f64], p: &[f64], g: &mut [f64]) {
-        let (a, b) = (p[0] + p[1], p[1] - p[0]);
-        g[0] = y0[0].powi(3) - a * y0[0] + b;
-    }
-    fn boundary_jacobian(
-        &self,
-        y0: &[f64],
-        _y1: &[f64],
-        p: &[f64],
-        mut dg0: hockle::nalgebra::DMatrixViewMut<'_, f64>,
-        _dg1: hockle::nalgebra::DMatrixViewMut<'_, f64>,
-        mut dgp: hockle::nalgebra::DMatrixViewMut<'_, f64>,
-    ) -> bool {
-        let x = y0[0];
-        dg0[(0, 0)] = 3.0 * x * x - (p[0] + p[1]) + self.error;
-        dgp[(0, 0)] = -x - 1.0;
-        dgp[(0, 1)] = -x + 1.0;
-        true
-    }
-}
 
 /// (λ, μ) on the curve of folds at x (module docs).
 fn on_curve(error: f64, x: f64) -> (f64, f64) {
@@ -79,7 +42,12 @@ fn on_curve(error: f64, x: f64) -> (f64, f64) {
 /// near its cusps) and the arclength is x's to within 1 %: the first step
 /// ends near x = 0.05 − `step`.
 fn skewed_curve(error: f64, step: f64, stop: f64) -> FoldCurve {
-    let p = SkewedCubic { error };
+    // the rotated cubic (a = λ + μ, b = μ − λ) with ∂g/∂x off by `error`
+    let p = Cubic {
+        mix: 1.0,
+        analytic: true,
+        jacobian_error: error,
+    };
     let solver = Collocation::new().intervals(4);
     let (lambda, mu) = on_curve(error, 0.05);
     // A root of the cubic near the fold (λ moved off it: at the fold the
