@@ -248,6 +248,26 @@ const START_LOAD: f64 = 1e-4;
 /// doubles in a few accepted steps where it is too small.
 const FALLBACK_STEP: f64 = 1e-3;
 
+/// `rod` solved at `parameters` from `guess`, or `None` where Newton
+/// fails or the system is singular there (the start's re-solves, which
+/// then keep what they had); any other error is returned.
+fn solve_unless_singular(
+    solver: &Collocation,
+    rod: &Rod,
+    guess: &Solution,
+    parameters: &[f64],
+) -> Result<Option<Solution>> {
+    match solver.solve(rod, guess, parameters) {
+        Ok(s) => Ok(Some(s)),
+        Err(
+            Error::NewtonDiverged { .. }
+            | Error::NewtonNotConverged { .. }
+            | Error::SingularJacobian { .. },
+        ) => Ok(None),
+        Err(e) => Err(e),
+    }
+}
+
 /// The default tolerance of a pull (the bar: the paper's folds to
 /// 1e-6).
 const DEFAULT_TOLERANCE: f64 = 1e-6;
@@ -552,15 +572,7 @@ impl Pull {
         // straight rod: ∂Δz/∂F = 0 at Δz = 1) and its Newton fails, the
         // rest is kept as it is.
         let rest = if rod.control() == Control::Extension {
-            match solver.solve(&rod, &rest, &p0) {
-                Ok(s) => s,
-                Err(
-                    Error::NewtonDiverged { .. }
-                    | Error::NewtonNotConverged { .. }
-                    | Error::SingularJacobian { .. },
-                ) => rest,
-                Err(e) => return Err(e),
-            }
+            solve_unless_singular(&solver, &rod, &rest, &p0)?.unwrap_or(rest)
         } else {
             rest
         };
@@ -592,14 +604,9 @@ impl Pull {
                 // rod compressed at its buckling load, a singular point of
                 // this solve, the first step is FALLBACK_STEP and the step
                 // control grows it)
-                match solver.solve(&rod, &rest, &p1) {
-                    Ok(near) => cont.distance(&rest, &near)?,
-                    Err(
-                        Error::NewtonDiverged { .. }
-                        | Error::NewtonNotConverged { .. }
-                        | Error::SingularJacobian { .. },
-                    ) => FALLBACK_STEP,
-                    Err(e) => return Err(e),
+                match solve_unless_singular(&solver, &rod, &rest, &p1)? {
+                    Some(near) => cont.distance(&rest, &near)?,
+                    None => FALLBACK_STEP,
                 }
                 .clamp(self.ds_min, self.ds_max)
             }
