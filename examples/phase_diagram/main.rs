@@ -525,41 +525,43 @@ fn compute(
             "n = {coils}: {} pop-outs at θ0 = {THETA0_DEG}°, A/B = {A_OVER_B}, ν = {NU}",
             pops.len()
         );
-        let results: Vec<_> = std::thread::scope(|s| {
-            let handles: Vec<_> = pops
-                .iter()
-                .enumerate()
-                .map(|(i, pair)| s.spawn(move || pop_out_lines(coils, i, &pair[0])))
-                .collect();
-            handles
-                .into_iter()
-                .map(|h| h.join().expect("no panic"))
-                .collect()
-        });
-        for r in results {
-            lines.extend(r?);
-        }
+        lines.extend(in_parallel(&pops, |i, pair| {
+            pop_out_lines(coils, i, &pair[0])
+        })?);
     }
     let known = PhaseDiagram::new(coils, lines.clone())?;
     let first = known.pop_out_count();
     let seeds = seeded(coils, &known)?;
+    lines.extend(in_parallel(&seeds, |k, (family, c0, ab)| {
+        lines_through(family, first + k, c0, *ab)
+    })?);
+    let d = PhaseDiagram::new(coils, lines)?;
+    eprintln!("computed in {:.1} s", clock.elapsed().as_secs_f64());
+    Ok(d)
+}
+
+/// The lines of every item, one thread per item (in item order).
+fn in_parallel<T: Sync>(
+    items: &[T],
+    lines_of: impl Fn(usize, &T) -> Result<Vec<CuspLine>, Box<dyn Error + Send + Sync>> + Sync,
+) -> Result<Vec<CuspLine>, Box<dyn Error + Send + Sync>> {
+    let lines_of = &lines_of;
     let results: Vec<_> = std::thread::scope(|s| {
-        let handles: Vec<_> = seeds
+        let handles: Vec<_> = items
             .iter()
             .enumerate()
-            .map(|(k, (family, c0, ab))| s.spawn(move || lines_through(family, first + k, c0, *ab)))
+            .map(|(i, item)| s.spawn(move || lines_of(i, item)))
             .collect();
         handles
             .into_iter()
             .map(|h| h.join().expect("no panic"))
             .collect()
     });
+    let mut lines = Vec::new();
     for r in results {
         lines.extend(r?);
     }
-    let d = PhaseDiagram::new(coils, lines)?;
-    eprintln!("computed in {:.1} s", clock.elapsed().as_secs_f64());
-    Ok(d)
+    Ok(lines)
 }
 
 fn main() -> std::process::ExitCode {
