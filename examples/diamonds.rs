@@ -3,6 +3,7 @@
 //!
 //! ```text
 //! cargo run --release --example diamonds
+//! cargo run --release --example diamonds -- --nu -0.2 --nu -0.3   # every diamond below F/(2πn)² = 40 at these ν
 //! ```
 //!
 //! Prints every diamond up to F/(2πn)² = 2 for the paper's rod (A/B = 10,
@@ -13,7 +14,40 @@ use hockle::Stiffness;
 use hockle::elastica::{Branch, Elastica, OutOfPlane};
 use hockle::special::Modulus;
 
-fn main() -> Result<(), hockle::Error> {
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let mut nus = Vec::new();
+    let mut args = std::env::args().skip(1);
+    while let Some(a) = args.next() {
+        match a.as_str() {
+            "--nu" => nus.push(
+                args.next()
+                    .ok_or("--nu needs a Poisson ratio")?
+                    .parse::<f64>()?,
+            ),
+            other => {
+                return Err(
+                    format!("unknown argument {other}; allowed: --nu NU (repeatable)").into(),
+                );
+            }
+        }
+    }
+    if !nus.is_empty() {
+        // every branch's diamonds at the Nikolai C of each ν (A/B = 10)
+        println!("nu,C/B,branch,force_scaled,extension");
+        for nu in nus {
+            let s = Stiffness::nikolai(10.0, nu)?;
+            for d in OutOfPlane::new(4, s)?.all_diamonds(40.0)? {
+                println!(
+                    "{nu},{:.4},{},{:.5},{:.5}",
+                    s.c(),
+                    d.branch(),
+                    d.force_scaled(),
+                    d.extension()
+                );
+            }
+        }
+        return Ok(());
+    }
     let paper = Stiffness::nikolai(10.0, 0.05)?;
     println!("# n = 4, A/B = 10, C/B = {:.4} (ν = 0.05)", paper.c());
     println!("branch,k,force_scaled,extension");
