@@ -6,7 +6,7 @@
 //! cargo run --release --example phase_diagram [-- --coils N] [--out DIR] [--compute]
 //! cargo run --release --example phase_diagram -- --coils 8 --extend docs/data/phase_diagram_n8.csv
 //! cargo run --release --example phase_diagram -- --check   # convergence, docs/ACCURACY.md
-//! cargo run --release --example phase_diagram -- --scene 89.8,10,0.05 [--scene …]
+//! cargo run --release --example phase_diagram -- --scene 89.8,10,0.05 [--scene …] [--pull F] [--forces]
 //! ```
 //!
 //! Without `--compute`, n = 4 is read from the committed diagram
@@ -31,6 +31,15 @@
 //! with each pop-out's maximum force: a cross-check of the diagram, which
 //! counts the pop-outs that exist at any force (docs/ACCURACY.md: at
 //! negative ν the maximum-force folds rise far above the reference's).
+//!
+//! `--forces` carries the reference pull's pop-outs (their two folds each,
+//! [`hockle::rod::CuspSearch::carry`]: in θ0, then A/B, then ν) to each
+//! `--scene` and prints, after its line, one line per pop-out,
+//! `carried pop_out=<i> max=<F> min=<F>` (F/((2πn)²B) of its maximum- and
+//! minimum-force folds there: the hysteresis loop), or `vanished` with the
+//! parameter and value of the cusp where its folds met on the way, or
+//! `ended` with the reason: the forces that the diagram's count does not
+//! give, without pulling the scene to them.
 //!
 //! `--scene THETA0_DEG,A_OVER_B,NU` (repeatable) prints one line per scene,
 //! `scene theta0=<deg> a_over_b=<x> nu=<x> pop_outs=<count>`, read off the
@@ -253,6 +262,15 @@ fn line_search() -> CuspSearch {
         .intervals(INTERVALS)
         .curve_ds_max(0.5)
         .curve_max_angle(CURVE_MAX_ANGLE)
+}
+
+/// The search `--forces` carries folds with: the default 48 intervals
+/// (on the lines' 24, folds carried to θ0 = 89.1°, ν = −0.2 met spurious
+/// cusps at ν = −0.1999 and −0.1990, where the loops are tight at
+/// F/((2πn)²B) ≈ 4; on 48 they reach it, at the adaptive pull's forces to
+/// its four printed digits).
+fn carry_search() -> CuspSearch {
+    CuspSearch::new()
 }
 
 /// The family of the reference spring of n coils.
@@ -583,6 +601,7 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
         .join("hockle");
     let (mut coils, mut force, mut scenes, mut checks) = (4_u32, false, Vec::new(), false);
     let mut pull_to: Option<f64> = None;
+    let mut carry = false;
     let mut extend: Option<PathBuf> = None;
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
@@ -605,6 +624,7 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
                 force = true;
             }
             "--check" => checks = true,
+            "--forces" => carry = true,
             "--coils" => {
                 let v = args.next().ok_or("--coils needs a number")?;
                 coils = v
@@ -708,6 +728,13 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
         std::fs::write(&svg, svg::draw(&diagram))?;
         println!("wrote {}", svg.display());
     }
+    let reference = if carry && !scenes.is_empty() {
+        let family = reference_family(coils)?;
+        let pops = carry_search().pop_outs(&family, 3.0)?;
+        Some((family, pops))
+    } else {
+        None
+    };
     for (t, a, nu) in scenes {
         match diagram.pop_outs(t.to_radians(), a, nu) {
             Ok(n) if diagram.is_complete() => {
@@ -723,6 +750,51 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
         }
         if let Some(to) = pull_to {
             pull_scene(coils, (t, a, nu), to)?;
+        }
+        if let Some((family, pops)) = &reference {
+            carry_to_scene(family, pops, (t, a, nu))?;
+        }
+    }
+    Ok(())
+}
+
+/// `--forces`: each reference pop-out's two folds carried to the scene.
+fn carry_to_scene(
+    family: &NikolaiRod,
+    pops: &[[Solution; 2]],
+    (t, a, nu): (f64, f64, f64),
+) -> Result<(), Box<dyn Error + Send + Sync>> {
+    let search = carry_search();
+    for (i, pair) in pops.iter().enumerate() {
+        let mut forces = Vec::new();
+        let mut stopped = None;
+        for fold in pair {
+            let (leg, followed) = search.carry(family, fold, (t.to_radians(), a, nu))?;
+            match followed {
+                Followed::Reached(at) => forces.push(at.parameters()[NikolaiRod::FORCE_SCALED]),
+                Followed::Cusp(c) => {
+                    let (name, value) = match leg {
+                        Rod::THETA0 => ("theta0", c.parameter().to_degrees()),
+                        NikolaiRod::LN_A_OVER_B => ("a_over_b", c.parameter().exp()),
+                        _ => ("nu", c.parameter()),
+                    };
+                    stopped = Some(format!("vanished {name}={value:.6}"));
+                    break;
+                }
+                Followed::Ended(why) => {
+                    stopped = Some(format!("ended ({why})"));
+                    break;
+                }
+            }
+        }
+        match stopped {
+            Some(how) => println!("carried pop_out={} {how}", i + 1),
+            None => println!(
+                "carried pop_out={} max={:.6} min={:.6}",
+                i + 1,
+                forces[0],
+                forces[1]
+            ),
         }
     }
     Ok(())

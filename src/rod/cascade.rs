@@ -14,7 +14,8 @@
 //! ```
 //!
 //! [`CuspSearch::follow`] continues a fold to a requested value of one
-//! parameter and reports the first cusp met on the way;
+//! parameter and reports the first cusp met on the way; [`CuspSearch::carry`]
+//! carries it to another spring (θ0, A/B, ν): the force of a pop-out there;
 //! [`CuspSearch::pop_outs`] pulls a spring and pairs its folds;
 //! [`CuspSearch::cusp_curve`] traces the curve of cusps in a third
 //! parameter (`examples/phase_diagram`).
@@ -44,6 +45,7 @@ use crate::continuation::{
 };
 use crate::error::{Error, Result};
 use crate::load::Target;
+use crate::stiffness::Stiffness;
 
 /// Newton's tolerance on a cusp curve (relative to 1 + ‖x‖∞).
 const CUSP_NEWTON_TOLERANCE: f64 = 1e-7;
@@ -246,6 +248,49 @@ impl CuspSearch {
             )),
             t => Followed::Ended(t.clone()),
         })
+    }
+}
+
+impl CuspSearch {
+    /// Carries the fold `start` (a solution of `family` at a fold in the
+    /// scaled force) to the scene (θ0 in radians, A/B, ν): continued in θ0,
+    /// then in ln(A/B), then in ν ([`follow`](Self::follow), each leg to
+    /// the scene's value). `Reached` gives the fold at the scene, so its
+    /// force F/((2πn)²B) ([`NikolaiRod::FORCE_SCALED`]); carrying both folds
+    /// of a pop-out gives its maximum and minimum force there, the width of
+    /// its hysteresis loop. `Cusp` says the pop-out vanishes on this path
+    /// (its two folds meet): the count at a scene is the diagram's
+    /// ([`super::PhaseDiagram::pop_outs`]), since a region need not contain
+    /// the whole path. Returned with the parameter of the leg that ended
+    /// it ([`NikolaiRod::NU`] when the scene was reached).
+    ///
+    /// # Errors
+    /// The errors of [`Stiffness::nikolai`] and [`Rod::new`] for a scene
+    /// that is not a spring (θ0 outside (0, π/2], A/B not positive and
+    /// finite, ν outside (−1, ½]); those of [`follow`](Self::follow).
+    pub fn carry(
+        &self,
+        family: &NikolaiRod,
+        start: &Solution,
+        (theta0, a_over_b, nu): (f64, f64, f64),
+    ) -> Result<(usize, Followed)> {
+        Rod::new(
+            family.rod().coils(),
+            theta0,
+            Stiffness::nikolai(a_over_b, nu)?,
+        )?;
+        let mut at = start.clone();
+        for (parameter, to) in [
+            (Rod::THETA0, theta0),
+            (NikolaiRod::LN_A_OVER_B, a_over_b.ln()),
+            (NikolaiRod::NU, nu),
+        ] {
+            match self.follow(family, &at, parameter, to)? {
+                Followed::Reached(fold) => at = *fold,
+                ended => return Ok((parameter, ended)),
+            }
+        }
+        Ok((NikolaiRod::NU, Followed::Reached(Box::new(at))))
     }
 }
 

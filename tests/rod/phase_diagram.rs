@@ -2,9 +2,12 @@
 //! committed n = 4 diagram against direct pulls.
 
 use hockle::bvp::Problem;
-use hockle::rod::{CuspAt, CuspLine, Fixed, LineEnd, NikolaiRod, PhaseDiagram, Rod, Unfinished};
+use hockle::rod::{
+    CuspAt, CuspLine, CuspSearch, Fixed, Followed, LineEnd, NikolaiRod, PhaseDiagram, Pull, Rod,
+    Unfinished,
+};
 use hockle::spring::{Model, RodModel, Spring};
-use hockle::{Error, Stiffness};
+use hockle::{Error, FoldKind, Stiffness, Target};
 
 use crate::common::rel_err;
 
@@ -309,3 +312,70 @@ const SCENES_N8: [(f64, f64, f64, usize, f64); 8] = [
     (80.0, 10.0, -0.5, 24, 3.0),
     (82.0, 10.0, -0.4, 24, 3.0),
 ];
+
+/// A fold carried by continuation from the paper's spring to another one
+/// against the same fold found there by an adaptive pull: two computations
+/// that share only the rod's equations (fold continuation of the
+/// extended system on a uniform mesh of 48 intervals against a pull's
+/// located fold on its own adaptive mesh).
+#[test]
+fn a_fold_carried_to_another_spring_is_the_fold_a_pull_finds_there() {
+    let rod = Rod::new(
+        4,
+        89.8_f64.to_radians(),
+        Stiffness::nikolai(10.0, 0.05).unwrap(),
+    )
+    .unwrap();
+    let family = NikolaiRod::new(rod, 0.05).unwrap();
+    let search = CuspSearch::new();
+    let pops = search.pop_outs(&family, 3.0).unwrap();
+    assert_eq!(pops.len(), 3);
+    let scene = (89.5_f64.to_radians(), 8.0, 0.1);
+    let (leg, carried) = search.carry(&family, &pops[0][0], scene).unwrap();
+    let Followed::Reached(fold) = carried else {
+        panic!("pop-out 1 exists at (89.5°, 8, 0.1) (the diagram's count is 3): {carried:?}");
+    };
+    assert_eq!(leg, NikolaiRod::NU);
+    assert_eq!(
+        &fold.parameters()[2..],
+        &[scene.0, 8_f64.ln(), 0.1],
+        "the carried fold is at the scene"
+    );
+    let f = fold.parameters()[NikolaiRod::FORCE_SCALED];
+    let there = Rod::new(4, scene.0, Stiffness::nikolai(8.0, 0.1).unwrap()).unwrap();
+    let run = Pull::new(there, Target::Force(3.0)).run(()).unwrap();
+    assert!(run.reached_target(), "{run}");
+    let scale = run.curve().scale();
+    let nearest = run
+        .folds()
+        .iter()
+        .filter(|fold| fold.kind == FoldKind::MaxForce)
+        .map(|fold| (fold.point.force_scaled(scale) - f).abs())
+        .fold(f64::INFINITY, f64::min);
+    // The fold on 48 uniform intervals, m = 4, is within 6e-7 of the
+    // converged one on the paper's spring (docs/PERFORMANCE.md, tolerance
+    // sweep: N = 48, m = 4), the pull's within its tolerance 1e-6: their
+    // sum, rounded up (measured: 1.1e-9 apart).
+    assert!(
+        nearest < CARRIED_FOLD,
+        "carried {f}: {nearest:e} from the pull's nearest fold"
+    );
+    // A scene that is not a spring is refused before any continuation.
+    for bad in [
+        (1.5, -1.0, 0.1),
+        (1.5, 8.0, 0.7),
+        (2.0, 8.0, 0.1),
+        (1.5, f64::NAN, 0.1),
+    ] {
+        assert!(
+            matches!(
+                search.carry(&family, &pops[0][0], bad),
+                Err(Error::InvalidArgument { .. })
+            ),
+            "{bad:?}"
+        );
+    }
+}
+
+/// See `a_fold_carried_to_another_spring_is_the_fold_a_pull_finds_there`.
+const CARRIED_FOLD: f64 = 2e-6;
