@@ -170,24 +170,30 @@ impl<const NS: usize, const NY: usize> Maclaurin<NS, NY> {
         let (x, n) = halve_below(v, self.max);
         let x2 = x * x;
         let x4 = x2 * x2;
-        // Estrin: pairs (a₂ₖ + a₂ₖ₊₁ x²) by Horner in x⁴, half the chain.
-        let horner = |a: &[f64]| {
-            let mut acc = 0.0;
-            let mut k = a.len();
-            if k % 2 == 1 {
-                k -= 1;
-                acc = a[k];
+        let x8 = x4 * x4;
+        // Estrin to the end: pairs (a₂ₖ + a₂ₖ₊₁ x²), then quads in x⁴,
+        // octets in x⁸ (up to 12 coefficients): two dependent multiply-adds
+        // after the pairs where Horner in x⁴ over them took four (the series
+        // feeds every doubling step, so its latency is the call's: jacobi
+        // −6% on the bench's uniform set, docs/PERFORMANCE.md sixth pass).
+        let estrin = |a: &[f64]| {
+            debug_assert!(a.len() <= 12);
+            let p = |k: usize| match a.len().saturating_sub(k) {
+                0 => 0.0,
+                1 => a[k],
+                _ => a[k] + a[k + 1] * x2,
+            };
+            let q = |k: usize| p(k) + x4 * p(k + 2);
+            if a.len() > 8 {
+                (q(0) + x8 * q(4)) + (x8 * x8) * q(8)
+            } else {
+                q(0) + x8 * q(4)
             }
-            while k > 0 {
-                k -= 2;
-                acc = (a[k] + a[k + 1] * x2) + x4 * acc;
-            }
-            acc
         };
-        let mut sn = x * (1.0 + x2 * horner(&self.s));
+        let mut sn = x + (x * x2) * estrin(&self.s);
         // y = 1 − cn, z = 1 − dn.
-        let mut y = x2 * horner(&self.y);
-        let mut z = x2 * horner(&self.z);
+        let mut y = x2 * estrin(&self.y);
+        let mut z = x2 * estrin(&self.z);
         // Homogeneous doubling: (S, Y, Z, Q) stand for sn = S/Q, y = Y/Q,
         // z = Z/Q, and the formulas above, multiplied through by Q⁴, need no
         // division until the end (each step's dependency chain loses a
