@@ -180,24 +180,39 @@ impl<const NS: usize, const NY: usize> Maclaurin<NS, NY> {
         let x2 = x * x;
         let x4 = x2 * x2;
         let x8 = x4 * x4;
-        // Estrin to the end: pairs (a₂ₖ + a₂ₖ₊₁ x²), then quads in x⁴,
-        // octets in x⁸ (up to 12 coefficients): two dependent multiply-adds
-        // after the pairs where Horner in x⁴ over them took four (the series
-        // feeds every doubling step, so its latency is the call's: jacobi
-        // −6% on the bench's uniform set, docs/PERFORMANCE.md sixth pass).
+        // Horner in x⁴ over the pairs (a₂ₖ + a₂ₖ₊₁ x²): kept for the order-22
+        // series of `FixedModulus`, where Estrin (below) made the extreme
+        // set's FixedModulus::jacobi 1.24× slower (docs/PERFORMANCE.md, sixth
+        // pass; not understood).
+        let horner = |a: &[f64]| {
+            let mut acc = 0.0;
+            let mut k = a.len();
+            if k % 2 == 1 {
+                k -= 1;
+                acc = a[k];
+            }
+            while k > 0 {
+                k -= 2;
+                acc = (a[k] + a[k + 1] * x2) + x4 * acc;
+            }
+            acc
+        };
+        // Estrin to the end for the order-16 series of single calls: pairs,
+        // then quads in x⁴ and octets in x⁸ (up to 8 coefficients): two
+        // dependent multiply-adds after the pairs where Horner took four
+        // (the series feeds every doubling step, so its latency is the
+        // call's: jacobi −6% on the bench's uniform set, sixth pass).
         let estrin = |a: &[f64]| {
-            debug_assert!(a.len() <= 12);
+            if a.len() > 8 {
+                return horner(a);
+            }
             let p = |k: usize| match a.len().saturating_sub(k) {
                 0 => 0.0,
                 1 => a[k],
                 _ => a[k] + a[k + 1] * x2,
             };
             let q = |k: usize| p(k) + x4 * p(k + 2);
-            if a.len() > 8 {
-                (q(0) + x8 * q(4)) + (x8 * x8) * q(8)
-            } else {
-                q(0) + x8 * q(4)
-            }
+            q(0) + x8 * q(4)
         };
         let mut sn = x + (x * x2) * estrin(&self.s);
         // y = 1 − cn, z = 1 − dn.
