@@ -215,7 +215,7 @@ pub(crate) fn jacobi_special(u: f64, m: f64, mc: f64) -> Option<Jacobi> {
 /// # Accuracy
 /// Normalised by 1 + the condition number in u (max over 5254 points,
 /// |u| ≤ 1e4, m₁ down to 1e-300, 3051 of them with m₁ ∈ [1e-12, 1e-3] and
-/// K/2 ≤ |u| ≤ 4K): sn 1.02, cn 1.25, dn 0.89, am 1.00 ulp;
+/// K/2 ≤ |u| ≤ 4K): sn 1.02, cn 1.16, dn 0.89, am 1.00 ulp;
 /// no NaN for finite u. Near the zeros of sn and cn at large |u| the raw
 /// error is large, as the rounding of u itself dictates.
 /// See the [module docs](crate::special#accuracy) for the table.
