@@ -40,12 +40,13 @@ pub(crate) fn atan_ratio(n: f64, d: f64, co: bool) -> f64 {
     }
 }
 
-/// am on [0, K] from (sn, cn) at v ∈ [0, K/2] (v may be a hair below 0):
-/// am(v) if not `folded`, am(K − v) if `folded` (see the module docs).
-/// `kp` = k′.
+/// am on [0, K] from (sn, cn) = (s/q, c/q) at v ∈ [0, K/2] (v may be a
+/// hair below 0): am(v) if not `folded`, am(K − v) if `folded` (see the
+/// module docs; the ratios are s/(q + c) and k′s/c, so the doubling's
+/// final division is not waited for). `kp` = k′.
 #[inline(always)]
-pub(crate) fn am_half_period(s: f64, c: f64, kp: f64, folded: bool) -> f64 {
-    let (n, d) = if folded { (kp * s, c) } else { (s, 1.0 + c) };
+pub(crate) fn am_half_period(s: f64, c: f64, q: f64, kp: f64, folded: bool) -> f64 {
+    let (n, d) = if folded { (kp * s, c) } else { (s, q + c) };
     let a = atan_ratio(n, d, folded);
     if folded { a } else { 2.0 * a }
 }

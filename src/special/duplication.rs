@@ -30,9 +30,16 @@ const SERIES_MAX: f64 = 1.0 / 8.0;
 /// fired only at the last step, where it gave the same 1 − y, and cost a
 /// mispredicted branch.)
 #[inline(always)]
-pub(crate) fn sncndn_small(v: f64, m: f64, mc: f64) -> (f64, f64, f64) {
+pub(crate) fn sncndn_small(v: f64, m: f64, mc: f64) -> Quarter {
     MaclaurinLow::new(m, mc).eval(v)
 }
+
+/// (sn, cn, dn) at v and, for am, sn and cn as S/Q and C/Q before the
+/// doubling's final division: (sn, cn, dn, S, C, Q). am's ratios
+/// sn/(1 + cn) = S/(Q + C) and k′ sn/cn = k′S/C then wait for one division,
+/// not two in a row (jacobi −6% on the bench's uniform set, sixth pass).
+/// Paths without a doubling give (sn, cn, dn, sn, cn, 1).
+pub(crate) type Quarter = (f64, f64, f64, f64, f64, f64);
 
 /// The Maclaurin coefficients of sn, 1 − cn and 1 − dn at one modulus
 /// (DLMF 22.10.1–3), in x² after the leading term, signs included: `NS`
@@ -160,17 +167,23 @@ impl MaclaurinLow {
 }
 
 impl<const NS: usize, const NY: usize> Maclaurin<NS, NY> {
-    /// (sn, cn, dn) at 0 ≤ v ≤ K/2, as described at [`sncndn_small`].
+    /// (sn, cn, dn) at 0 ≤ v ≤ K/2, as described at [`sncndn_small`], with
+    /// am's numerators ([`Quarter`]).
     #[inline(always)]
-    pub(crate) fn eval(&self, v: f64) -> (f64, f64, f64) {
+    pub(crate) fn eval(&self, v: f64) -> Quarter {
         let m = self.m;
         if self.mc < HYPERBOLIC_MC {
-            return sncndn_near_one(v, self.mc);
+            let (s, c, d) = sncndn_near_one(v, self.mc);
+            return (s, c, d, s, c, 1.0);
         }
         let (x, n) = halve_below(v, self.max);
         let x2 = x * x;
         let x4 = x2 * x2;
-        // Estrin: pairs (a₂ₖ + a₂ₖ₊₁ x²) by Horner in x⁴, half the chain.
+        let x8 = x4 * x4;
+        // Horner in x⁴ over the pairs (a₂ₖ + a₂ₖ₊₁ x²): kept for the order-22
+        // series of `FixedModulus`, where Estrin (below) made the extreme
+        // set's FixedModulus::jacobi 1.24× slower (docs/PERFORMANCE.md, sixth
+        // pass; not understood).
         let horner = |a: &[f64]| {
             let mut acc = 0.0;
             let mut k = a.len();
@@ -184,10 +197,27 @@ impl<const NS: usize, const NY: usize> Maclaurin<NS, NY> {
             }
             acc
         };
-        let mut sn = x * (1.0 + x2 * horner(&self.s));
+        // Estrin to the end for the order-16 series of single calls: pairs,
+        // then quads in x⁴ and octets in x⁸ (up to 8 coefficients): two
+        // dependent multiply-adds after the pairs where Horner took four
+        // (the series feeds every doubling step, so its latency is the
+        // call's: jacobi −6% on the bench's uniform set, sixth pass).
+        let estrin = |a: &[f64]| {
+            if a.len() > 8 {
+                return horner(a);
+            }
+            let p = |k: usize| match a.len().saturating_sub(k) {
+                0 => 0.0,
+                1 => a[k],
+                _ => a[k] + a[k + 1] * x2,
+            };
+            let q = |k: usize| p(k) + x4 * p(k + 2);
+            q(0) + x8 * q(4)
+        };
+        let mut sn = x + (x * x2) * estrin(&self.s);
         // y = 1 − cn, z = 1 − dn.
-        let mut y = x2 * horner(&self.y);
-        let mut z = x2 * horner(&self.z);
+        let mut y = x2 * estrin(&self.y);
+        let mut z = x2 * estrin(&self.z);
         // Homogeneous doubling: (S, Y, Z, Q) stand for sn = S/Q, y = Y/Q,
         // z = Z/Q, and the formulas above, multiplied through by Q⁴, need no
         // division until the end (each step's dependency chain loses a
@@ -209,7 +239,7 @@ impl<const NS: usize, const NY: usize> Maclaurin<NS, NY> {
             z = 2.0 * m * (s2 * c2);
             q = c2 * q2 + s2d2;
         }
-        (sn / q, 1.0 - y / q, 1.0 - z / q)
+        (sn / q, 1.0 - y / q, 1.0 - z / q, sn, q - y, q)
     }
 }
 

@@ -3,7 +3,7 @@
 use super::Modulus;
 use super::complete::{ellip_e_dd, ellip_k_dd};
 use super::derivatives::{JacobiDm, ellip_k_dm, jacobi_dm_from};
-use super::duplication::MaclaurinHigh;
+use super::duplication::{MaclaurinHigh, Quarter};
 use super::epsilon::{epsilon_assemble, epsilon_half_period};
 use super::jacobi::{Jacobi, assemble, jacobi_special, sncndn_am_half_period};
 use super::landen::{LANDEN_MC, LANDEN_MIN_V, LandenChain};
@@ -94,9 +94,12 @@ impl FixedModulus {
 
     /// (sn, cn, dn) on [0, K/2].
     #[inline(always)]
-    fn quarter(&self, v: f64) -> (f64, f64, f64) {
+    fn quarter(&self, v: f64) -> Quarter {
         match &self.landen {
-            Some(chain) if v >= LANDEN_MIN_V => chain.eval(v),
+            Some(chain) if v >= LANDEN_MIN_V => {
+                let (s, c, d) = chain.eval(v);
+                (s, c, d, s, c, 1.0)
+            }
             _ => self.series.eval(v),
         }
     }
@@ -131,7 +134,8 @@ impl FixedModulus {
         }
         let red = self.period.reduce(u);
         let e_r = epsilon_half_period(red.r.abs(), &self.period, self.e(), m, mc, |v| {
-            self.quarter(v)
+            let (s, c, d, ..) = self.quarter(v);
+            (s, c, d)
         });
         epsilon_assemble(red.j, red.r, e_r, self.e)
     }

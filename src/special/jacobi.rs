@@ -4,7 +4,7 @@ use core::fmt;
 
 use super::Modulus;
 use super::amplitude::am_half_period;
-use super::duplication::sncndn_small;
+use super::duplication::{Quarter, sncndn_small};
 use super::incomplete::{PI_HI, PI_LO};
 use super::landen::{LANDEN_MC, LANDEN_MIN_V, LandenChain};
 use super::period::{Period, Reduced};
@@ -95,8 +95,16 @@ impl fmt::Display for Jacobi {
 /// and doubling ([`sncndn_small`]) take at most four steps.
 #[inline]
 pub(crate) fn sncndn_quarter(v: f64, m: f64, mc: f64) -> (f64, f64, f64) {
+    let (s, c, d, ..) = sncndn_quarter_h(v, m, mc);
+    (s, c, d)
+}
+
+/// [`sncndn_quarter`] with am's numerators ([`Quarter`]).
+#[inline]
+pub(crate) fn sncndn_quarter_h(v: f64, m: f64, mc: f64) -> Quarter {
     if v >= LANDEN_MIN_V && mc <= LANDEN_MC {
-        LandenChain::new(m, mc, v).eval(v)
+        let (s, c, d) = LandenChain::new(m, mc, v).eval(v);
+        (s, c, d, s, c, 1.0)
     } else {
         sncndn_small(v, m, mc)
     }
@@ -116,7 +124,7 @@ pub(crate) fn sncndn_am_half_period(
     period: &Period,
     mc: f64,
     kp: f64,
-    quarter: impl Fn(f64) -> (f64, f64, f64),
+    quarter: impl Fn(f64) -> Quarter,
 ) -> (f64, f64, f64, f64) {
     let folded = a > 0.5 * period.k;
     let v = if folded {
@@ -124,8 +132,8 @@ pub(crate) fn sncndn_am_half_period(
     } else {
         a
     };
-    let (s, c, d) = quarter(v);
-    let am = am_half_period(s, c, kp, folded);
+    let (s, c, d, s_num, c_num, q) = quarter(v);
+    let am = am_half_period(s_num, c_num, q, kp, folded);
     // sn a = cd s = √(1 − m₁ sd² s): the ratio cn/dn of two values near √k′
     // would carry both their errors, while m₁ sd² ≤ ½ here.
     let sd = s / d;
@@ -207,7 +215,7 @@ pub(crate) fn jacobi_special(u: f64, m: f64, mc: f64) -> Option<Jacobi> {
 /// # Accuracy
 /// Normalised by 1 + the condition number in u (max over 5254 points,
 /// |u| ≤ 1e4, m₁ down to 1e-300, 3051 of them with m₁ ∈ [1e-12, 1e-3] and
-/// K/2 ≤ |u| ≤ 4K): sn 1.02, cn 1.25, dn 0.89, am 1.00 ulp;
+/// K/2 ≤ |u| ≤ 4K): sn 1.02, cn 1.16, dn 0.89, am 1.00 ulp;
 /// no NaN for finite u. Near the zeros of sn and cn at large |u| the raw
 /// error is large, as the rounding of u itself dictates.
 /// See the [module docs](crate::special#accuracy) for the table.
@@ -233,7 +241,7 @@ pub fn jacobi(u: f64, modulus: Modulus) -> Jacobi {
     let period = Period::new(modulus);
     let red = period.reduce(u);
     let f = sncndn_am_half_period(red.r.abs(), &period, mc, mc.sqrt(), |v| {
-        sncndn_quarter(v, m, mc)
+        sncndn_quarter_h(v, m, mc)
     });
     assemble(&red, f)
 }
