@@ -22,7 +22,7 @@ use super::Modulus;
 use super::carlson::rd;
 use super::complete::{ellip_e, ellip_k};
 use super::incomplete::reduce_pi_sin_cos;
-use super::jacobi::{Jacobi, assemble, sncndn_am_half_period, sncndn_quarter_h};
+use super::jacobi::{Jacobi, assemble, sncndn_am_half_period, sncndn_quarter_numerators};
 use super::period::Period;
 
 /// Below this m₁, dK/dm = (E − m₁K)/(2 m m₁) (E ≥ 1 ≫ m₁K ≤ 0.16: little
@@ -242,7 +242,7 @@ pub fn jacobi_dm(u: f64, modulus: Modulus) -> (Jacobi, JacobiDm) {
     let period = Period::new(modulus);
     let red = period.reduce(u);
     let f = sncndn_am_half_period(red.r.abs(), &period, mc, mc.sqrt(), |v| {
-        sncndn_quarter_h(v, m, mc)
+        sncndn_quarter_numerators(v, m, mc)
     });
     let value = assemble(&red, f);
     let d = jacobi_dm_from(&value, red.j, red.r, m, || ellip_k_dm(modulus));

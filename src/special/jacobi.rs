@@ -95,13 +95,13 @@ impl fmt::Display for Jacobi {
 /// and doubling ([`sncndn_small`]) take at most four steps.
 #[inline]
 pub(crate) fn sncndn_quarter(v: f64, m: f64, mc: f64) -> (f64, f64, f64) {
-    let (s, c, d, ..) = sncndn_quarter_h(v, m, mc);
+    let (s, c, d, ..) = sncndn_quarter_numerators(v, m, mc);
     (s, c, d)
 }
 
 /// [`sncndn_quarter`] with am's numerators ([`Quarter`]).
 #[inline]
-pub(crate) fn sncndn_quarter_h(v: f64, m: f64, mc: f64) -> Quarter {
+pub(crate) fn sncndn_quarter_numerators(v: f64, m: f64, mc: f64) -> Quarter {
     if v >= LANDEN_MIN_V && mc <= LANDEN_MC {
         let (s, c, d) = LandenChain::new(m, mc, v).eval(v);
         (s, c, d, s, c, 1.0)
@@ -241,7 +241,7 @@ pub fn jacobi(u: f64, modulus: Modulus) -> Jacobi {
     let period = Period::new(modulus);
     let red = period.reduce(u);
     let f = sncndn_am_half_period(red.r.abs(), &period, mc, mc.sqrt(), |v| {
-        sncndn_quarter_h(v, m, mc)
+        sncndn_quarter_numerators(v, m, mc)
     });
     assemble(&red, f)
 }
