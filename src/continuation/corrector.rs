@@ -246,36 +246,8 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
     /// not get there.
     pub(super) fn refined_tangent(&mut self, x: &State) -> Option<State> {
         let enough = self.tangent_tolerance();
-        let guess = self.tangent_guess(x);
-        refine_border_solution(&mut self.sys, x, guess, enough)
-    }
-
-    /// The start of [`refined_tangent`](Self::refined_tangent) at `x` on
-    /// the branch through x₀: the chord's unit vector ĉ (oriented along
-    /// τ₀) is the tangent at the chord's midpoint to O(h²), so 2ĉ − τ₀ is
-    /// the tangent at x to O(h²) where τ₀ is off by the whole turn O(h)
-    /// (one or two refinements fewer on the rod's steps, which turn by up to
-    /// a quarter radian); scaled to the border ⟨·, τ₀⟩ = 1. τ₀ itself where
-    /// the chord vanishes or the guess leans away from τ₀.
-    fn tangent_guess(&mut self, x: &State) -> State {
-        let free = self.sys.free.clone();
-        let (x0, t0) = (self.x0.clone(), self.t0.clone());
-        let mut g = x.clone();
-        g.axpy(-1.0, &x0, &free);
-        let c = self.norm(&g);
-        let along = self.inner(&g, &t0);
-        if !(c > 0.0 && c.is_finite()) {
-            return t0;
-        }
-        g.scale(2.0 * along.signum() / c);
-        g.axpy(-1.0, &t0, &free);
-        let s = self.inner(&g, &t0);
-        if s > 0.5 && s.is_finite() {
-            g.scale(1.0 / s);
-            g
-        } else {
-            t0
-        }
+        let t0 = self.t0.clone();
+        refine_border_solution(&mut self.sys, x, t0, enough)
     }
 
     /// The correction below which a tangent is good enough: 1e-10, or with
