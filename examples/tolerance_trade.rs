@@ -5,6 +5,7 @@
 //!
 //! ```text
 //! cargo run --release --example tolerance_trade [-- --out DIR] [--repeat R] [--memory]
+//! cargo run --release --example tolerance_trade -- --one TOL
 //! ```
 //!
 //! Per run: user CPU seconds of the run alone (the process's `utime` from
@@ -23,7 +24,9 @@
 //! true fold error, log-log) into DIR (default `$CARGO_TARGET_DIR/hockle`,
 //! else `target/hockle` under the crate). `--memory` makes one default
 //! pull and prints the peak resident memory (`VmHWM` of `/proc/self/status`)
-//! instead. Other processes share the machine: the load average
+//! instead. `--one TOL` makes one pull at TOL and prints it (the run to
+//! count instructions of, under `valgrind --tool=cachegrind`; docs/PERFORMANCE.md).
+//! Other processes share the machine: the load average
 //! (`/proc/loadavg`) is printed before and after.
 
 use std::error::Error;
@@ -200,12 +203,14 @@ fn main() -> Result<(), Box<dyn Error>> {
         .join("hockle");
     let mut repeat = 3;
     let mut memory = false;
+    let mut one = None;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {
             "--out" => out = PathBuf::from(args.next().ok_or("--out needs a directory")?),
             "--repeat" => repeat = args.next().ok_or("--repeat needs R")?.parse()?,
             "--memory" => memory = true,
+            "--one" => one = Some(args.next().ok_or("--one needs TOL")?.parse::<f64>()?),
             other => return Err(format!("unknown argument {other}").into()),
         }
     }
@@ -213,6 +218,11 @@ fn main() -> Result<(), Box<dyn Error>> {
         return Err("--repeat needs R ≥ 1".into());
     }
     let rod = paper_rod()?;
+    if let Some(tol) = one {
+        let run = Pull::new(rod, Target::Force(3.0)).tolerance(tol).run(())?;
+        println!("{run}");
+        return Ok(());
+    }
     if memory {
         let before = peak_memory();
         let run = Pull::new(rod, Target::Force(3.0)).run(())?;

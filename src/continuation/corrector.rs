@@ -2,6 +2,7 @@
 //! the determinant sign.
 
 use super::Steps;
+use super::difference::{Difference, derivative_on};
 use super::norm::IntegralNorm;
 use crate::bvp::system::{State, System};
 use crate::bvp::{NewtonStats, Problem, newton, scaled_norm};
@@ -62,6 +63,44 @@ pub(super) fn border_rhs_solution<P: Problem + ?Sized>(sys: &mut System<'_, P>) 
     let mut t = sys.zero_state();
     sys.solve(&r, &mut t)?;
     Ok(t)
+}
+
+/// The solution of [F_x(x); b] τ = e (b the border row of `sys`) from
+/// `guess` by iterative refinement preconditioned by the current
+/// factorisation of `sys` (at or near x), with F_x(x)τ by central
+/// differences ([`derivative_on`]): [`Steps::refined_tangent`]'s iteration,
+/// on any system of the run. It stops at a correction of a tenth of
+/// `enough` (not below 1e-10), or where it stalls (the difference
+/// quotient's rounding, about 1e-8 on the rod) if it got within `enough`;
+/// `None` otherwise.
+pub(super) fn refine_border_solution<P: Problem + ?Sized>(
+    sys: &mut System<'_, P>,
+    x: &State,
+    guess: State,
+    enough: f64,
+) -> Option<State> {
+    let free = sys.free.clone();
+    let mut t = guess;
+    let mut work = Difference::on(sys, x);
+    let mut d = sys.zero_state();
+    let mut prev = f64::INFINITY;
+    for _ in 0..8 {
+        derivative_on(sys, x, &t, &mut work).ok()?;
+        let last = work.out.dense.len() - 1;
+        work.out.dense[last] -= 1.0;
+        sys.solve(&work.out, &mut d).ok()?;
+        let nd = scaled_norm(&d, &t, &free);
+        if nd > 0.25 * prev {
+            // stalled: t is as good as the difference quotient allows
+            return (prev <= enough).then_some(t);
+        }
+        t.axpy(1.0, &d, &free);
+        if nd <= (0.1 * enough).max(1e-10) {
+            return Some(t);
+        }
+        prev = nd;
+    }
+    (prev <= enough).then_some(t)
 }
 
 /// A corrected point with its tangent and determinant (internal).
@@ -206,29 +245,9 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
     /// [`tangent_tolerance`](Self::tangent_tolerance); `None` when it does
     /// not get there.
     pub(super) fn refined_tangent(&mut self, x: &State) -> Option<State> {
-        let free = self.sys.free.clone();
         let enough = self.tangent_tolerance();
-        let mut t = self.t0.clone();
-        let mut work = self.difference(x);
-        let mut d = self.sys.zero_state();
-        let mut prev = f64::INFINITY;
-        for _ in 0..8 {
-            self.residual_derivative(x, &t, &mut work).ok()?;
-            let last = work.out.dense.len() - 1;
-            work.out.dense[last] -= 1.0;
-            self.sys.solve(&work.out, &mut d).ok()?;
-            let nd = scaled_norm(&d, &t, &free);
-            if nd > 0.25 * prev {
-                // stalled: t is as good as the difference quotient allows
-                return (prev <= enough).then_some(t);
-            }
-            t.axpy(1.0, &d, &free);
-            if nd <= (0.1 * enough).max(1e-10) {
-                return Some(t);
-            }
-            prev = nd;
-        }
-        (prev <= enough).then_some(t)
+        let t0 = self.t0.clone();
+        refine_border_solution(&mut self.sys, x, t0, enough)
     }
 
     /// The correction below which a tangent is good enough: 1e-10, or with

@@ -17,7 +17,7 @@
 //! is factored at x and the solve is direct.
 
 use super::Steps;
-use super::hermite::Jet;
+use super::hermite::{Degree, Jet};
 use crate::bvp::Problem;
 use crate::bvp::scaled_norm;
 use crate::bvp::system::State;
@@ -79,20 +79,25 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
     }
 
     /// The jet (P, P', P'') of `x` with unit tangent `t` in the diagram's
-    /// plane; P'' is NaN when x'' cannot be had.
+    /// plane; P'' is NaN when x'' cannot be had, and not computed (NaN)
+    /// for a run whose interpolant is the cubic (`hermite::CUBIC_FROM`).
     pub(super) fn jet(&mut self, x: &State, t: &State) -> Jet {
         let (point, slope) = self.diagram_of(x, t);
         let mut bend = f64::NAN;
-        let curvature = match self.second_derivative(x, t) {
+        let second = match self.degree() {
+            Degree::Quintic => self.second_derivative(x, t),
+            Degree::Cubic => None,
+        };
+        let curvature = match second {
             Some(a) => {
                 bend = self.inner(&a, &a);
-                let len = self.sys.y_ref.len();
-                let (mut xcol, mut tcol, mut acol) =
-                    (vec![0.0; len], vec![0.0; len], vec![0.0; len]);
-                self.sys.collocation_values(x, &mut xcol);
-                self.sys.collocation_values(t, &mut tcol);
-                self.sys.collocation_values(&a, &mut acol);
-                self.cont.diagram.curvature(
+                let diagram = &self.cont.diagram;
+                let (xcol, tcol, acol) = (
+                    diagram.values(&self.sys, x),
+                    diagram.values(&self.sys, t),
+                    diagram.values(&self.sys, &a),
+                );
+                diagram.curvature(
                     self.cont.parameter,
                     self.sys.n,
                     (x, &xcol),

@@ -19,7 +19,7 @@
 //! on from there).
 
 use super::Steps;
-use super::corrector::{STUCK_FLOOR, border_rhs_solution, set_hyperplane};
+use super::corrector::{STUCK_FLOOR, border_rhs_solution, refine_border_solution, set_hyperplane};
 use super::norm::IntegralNorm;
 use crate::bvp::system::{State, System};
 use crate::bvp::{Mesh, NewtonOptions, Problem, density, equidistribute, newton, state_on_mesh};
@@ -89,6 +89,8 @@ pub(super) struct HalvedMesh<'a, P: Problem + ?Sized> {
     mesh: Mesh,
     sys: System<'a, P>,
     norm: IntegralNorm,
+    /// The accepted-step count of the run at the last check.
+    checked_at: usize,
 }
 
 impl<'a, P: Problem + ?Sized> Steps<'a, P> {
@@ -113,11 +115,9 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
 
     /// The point of `x` and its slope along `t` in the diagram's plane.
     pub(super) fn diagram_of(&self, x: &State, t: &State) -> ([f64; 2], [f64; 2]) {
-        let len = self.sys.y_ref.len();
-        let (mut xcol, mut tcol) = (vec![0.0; len], vec![0.0; len]);
-        self.sys.collocation_values(x, &mut xcol);
-        self.sys.collocation_values(t, &mut tcol);
-        self.cont.diagram.point_and_slope(
+        let diagram = &self.cont.diagram;
+        let (xcol, tcol) = (diagram.values(&self.sys, x), diagram.values(&self.sys, t));
+        diagram.point_and_slope(
             self.cont.parameter,
             self.sys.n,
             (x, &xcol),
@@ -163,7 +163,12 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             )?;
             sys.linear = self.sys.linear;
             let norm = self.norm_on(&mesh);
-            self.halved = Some(HalvedMesh { mesh, sys, norm });
+            self.halved = Some(HalvedMesh {
+                mesh,
+                sys,
+                norm,
+                checked_at: usize::MAX,
+            });
         }
         let (tab, n) = (self.sys.tab.clone(), self.sys.n);
         let q = self.cont.parameter;
@@ -176,9 +181,23 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             max_iter: 12,
         };
         let floor = STUCK_FLOOR * self.opts.tol;
+        // (the fold's tangent refined to this relative correction on
+        // Newton's factorisation: its error δ moves dλ/ds by about δ and the
+        // secant's zero by δ/|d²λ/ds²| in arclength, a fiftieth of the
+        // location tolerance where |d²λ/ds²| ≥ 1; not below the difference
+        // quotient's floor, ~1e-8 on the rod: where the refinement stalls
+        // above it, a factorisation at the point takes over)
+        let enough = (0.02 * self.locate_tolerance).max(1e-8);
+        let accepted = self.accepted;
         let Some(h) = self.halved.as_mut() else {
             unreachable!("set above")
         };
+        // the last check's factorisation starts the corrector when it was
+        // made in this step (the located points' checks and the new
+        // point's, a fold's secant): from a few steps back its chord
+        // contracted too slowly in 41 of 43 checks of the paper's spring
+        // at tol 1e-2, and the failed try cost two residuals and solves
+        let mut recent = std::mem::replace(&mut h.checked_at, accepted) == accepted;
         let free = h.sys.free.clone();
         let xs = state_on_mesh(x, &self.mesh, &tab, n, &h.mesh);
         let ts = state_on_mesh(t, &self.mesh, &tab, n, &h.mesh);
@@ -197,10 +216,11 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
                 (&mut xcol, &mut tcol),
             );
             let mut fine = guess.clone();
-            // the last check's factorisation (a few steps back, same mesh)
-            // starts a chord corrector; Newton refreshes it when it
-            // contracts too slowly
-            let reuse = h.sys.is_factored() && h.sys.factor_border().is_ok();
+            // a recent factorisation (same mesh) starts a chord corrector;
+            // Newton refreshes it when it contracts too slowly
+            // (and always after the first corrector of a fold's secant)
+            let reuse = recent && h.sys.is_factored() && h.sys.factor_border().is_ok();
+            recent = true;
             match newton(&mut h.sys, &mut fine, opts, reuse) {
                 Ok(_) => {}
                 // (robust10c) Newton stuck at its rounding floor above the
@@ -216,8 +236,16 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             if !fold {
                 return Ok((fine, f64::NAN));
             }
-            h.sys.factor(&fine)?;
-            let tangent = border_rhs_solution(&mut h.sys)?;
+            // the tangent refined on Newton's last factorisation (at a point
+            // of this corrector or the last one's), factored at `fine` only
+            // where the refinement does not get there
+            let tangent = match refine_border_solution(&mut h.sys, &fine, ts.clone(), enough) {
+                Some(t) => t,
+                None => {
+                    h.sys.factor(&fine)?;
+                    border_rhs_solution(&mut h.sys)?
+                }
+            };
             Ok((fine, tangent.p[q]))
         };
         let (mut fine, f0) = on_plane(0.0, &xs)?;
@@ -244,12 +272,9 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
                 }
             }
         }
-        h.sys.collocation_values(&fine, &mut xcol);
-        h.sys.collocation_values(&ts, &mut tcol);
-        let (p, _) = self
-            .cont
-            .diagram
-            .point_and_slope(q, n, (&fine, &xcol), (&ts, &tcol), &h.norm);
+        let diagram = &self.cont.diagram;
+        let (xcol, tcol) = (diagram.values(&h.sys, &fine), diagram.values(&h.sys, &ts));
+        let (p, _) = diagram.point_and_slope(q, n, (&fine, &xcol), (&ts, &tcol), &h.norm);
         self.estimate.checks += 1;
         let difference = (p[0] - coarse[0]).abs().max((p[1] - coarse[1]).abs());
         Ok(MESH_SAFETY * difference)

@@ -64,7 +64,9 @@
 //! halves Δs and retries. With a [`tolerance`](Continuation::tolerance)
 //! the step also keeps the error of the quintic Hermite interpolant of the
 //! branch in the diagram's plane (through the points, slopes and
-//! curvatures) near a fifth of it and never above half, the turn of that interpolant's
+//! curvatures; at tolerances of 1e-3 and looser the cubic through points
+//! and slopes, whose steps the angle limit sets there as well) near a
+//! fifth of it and never above half, the turn of that interpolant's
 //! slope within the maximum angle, and the corrected point within 0.2 Δs
 //! of the predictor; and the mesh follows the solution (see there). Folds are sign changes of dλ/ds,
 //! branch points sign changes of det [F_x; τᵀ]; both are located by the

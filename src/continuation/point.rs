@@ -125,10 +125,11 @@ impl Point {
 
     /// Its second derivative along the branch, d²/ds² of
     /// [`Self::diagram`], at every point of a run with a
-    /// [`tolerance`](super::Continuation::tolerance), whose interpolant
-    /// between points is the quintic Hermite polynomial of the points,
-    /// slopes and curvatures. `None` in runs without a tolerance (and
-    /// where x'' could not be had).
+    /// [`tolerance`](super::Continuation::tolerance) below 1e-3, whose
+    /// interpolant between points is the quintic Hermite polynomial of the
+    /// points, slopes and curvatures. `None` in runs without a tolerance,
+    /// at tolerances of 1e-3 and looser (their interpolant is the cubic of
+    /// the points and slopes), and where x'' could not be had.
     #[must_use]
     pub fn diagram_curvature(&self) -> Option<[f64; 2]> {
         let [a, b] = self.diagram_curvature;

@@ -279,7 +279,10 @@ impl Continuation {
     ///   extra solve per step) is aimed at a fifth of the tolerance and a
     ///   step above half of it is done again (a cubic through points and
     ///   slopes alone, h⁴ ‖P''''‖/384, took 2.3–2.7 times the steps at
-    ///   1e-6 … 1e-8 on the rod);
+    ///   1e-6 … 1e-8 on the rod); at tolerances of 1e-3 and looser, where
+    ///   the angle between tangents sets the steps, the cubic it is, without
+    ///   the curvatures ([`Point::diagram_curvature`](super::Point::diagram_curvature)
+    ///   is `None` there and the dense output cubic);
     /// - the corrector's Newton tolerance 1e-4·tol (within [1e-12, 1e-6]) and
     ///   the location tolerance 0.05·tol (in arclength).
     ///

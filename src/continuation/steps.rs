@@ -3,7 +3,7 @@
 use std::collections::VecDeque;
 use std::fmt;
 
-use super::hermite::{self, Jet};
+use super::hermite::Jet;
 use super::mesh_error::{ErrorEstimate, HalvedMesh};
 use super::norm::IntegralNorm;
 use super::tolerance::{INTERPOLATION_REJECT, StepCheck, interpolation_factor};
@@ -419,10 +419,8 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             self.arclength = if fit.is_some() {
                 let start = self.start_jet();
                 let j = self.jet(&cs.x, &cs.tangent);
-                let mut chord = cs.x.clone();
-                chord.axpy(-1.0, &self.x0.clone(), &self.sys.free.clone());
                 jet = Some(j);
-                base + hermite::length(self.norm(&chord), &start, &j)
+                base + self.step_length(&cs.x, &cs.tangent, &start, &j)
             } else {
                 base + s
             };

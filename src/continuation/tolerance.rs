@@ -6,7 +6,7 @@
 //! folds passed over in one step).
 
 use super::Steps;
-use super::hermite::{self, Jet, across, turns_back_twice};
+use super::hermite::{self, Degree, Jet, across, turns_back_twice};
 use crate::bvp::Problem;
 use crate::bvp::system::State;
 use crate::error::Result;
@@ -71,9 +71,13 @@ const INTERPOLATION_SHARE: f64 = 0.25;
 pub(super) const INTERPOLATION_REJECT: f64 = 0.5;
 
 /// The step factor that brings the interpolation error `error` to 0.8 of
-/// its share of `tol`.
+/// its share of `tol` (for the interpolant of that tolerance's degree).
 pub(super) fn interpolation_factor(error: f64, tol: f64) -> f64 {
-    hermite::step_factor(error, 0.8 * INTERPOLATION_SHARE * tol)
+    hermite::step_factor(
+        error,
+        0.8 * INTERPOLATION_SHARE * tol,
+        Degree::for_tolerance(tol),
+    )
 }
 
 /// The interpolant of an accepted step: its P⁽⁵⁾, its error estimate and
@@ -124,6 +128,25 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         Ok(())
     }
 
+    /// The degree of the run's step interpolant (the quintic without a
+    /// tolerance, where no interpolant is checked).
+    pub(super) fn degree(&self) -> Degree {
+        self.cont
+            .tolerance
+            .map_or(Degree::Quintic, Degree::for_tolerance)
+    }
+
+    /// The arclength of the step from x₀ (tangent τ₀, jet `start`) to `x`
+    /// (tangent `t`, jet `end`): [`hermite::length`] of its chord, with the
+    /// angle between the tangents where the jets carry no bend.
+    pub(super) fn step_length(&mut self, x: &State, t: &State, start: &Jet, end: &Jet) -> f64 {
+        let mut chord = x.clone();
+        chord.axpy(-1.0, &self.x0, &self.sys.free);
+        let t0 = self.t0.clone();
+        let turn = self.inner(t, &t0).clamp(-1.0, 1.0).acos();
+        hermite::length(self.norm(&chord), start, end, turn)
+    }
+
     /// The jet of x₀ (computed once per point).
     pub(super) fn start_jet(&mut self) -> Jet {
         if let Some(j) = self.jet0 {
@@ -152,17 +175,16 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         let drift = self.norm(&d) / ds;
         let start = self.start_jet();
         let end = self.jet(&c.x, &c.tangent);
-        let mut chord = c.x.clone();
-        chord.axpy(-1.0, &self.x0.clone(), &free);
-        let h = hermite::length(self.norm(&chord), &start, &end);
-        let fifth = hermite::fifth(&start, &end, h);
+        let h = self.step_length(&c.x, &c.tangent, &start, &end);
+        let degree = self.degree();
+        let fifth = hermite::fifth(&start, &end, h, degree);
         let error = if !(fifth[0].is_finite() && fifth[1].is_finite()) {
             // no curvature at an end: no interpolant to trust
             f64::INFINITY
         } else {
             match self.last_fifth {
                 Some((prev, h_prev)) if comparable(h_prev, h) => {
-                    hermite::error(fifth, prev, h, h_prev)
+                    hermite::error(fifth, prev, h, h_prev, degree)
                 }
                 // no neighbour of comparable length (the first step, after a
                 // remesh or a change of scale): the error measured at the
@@ -170,7 +192,7 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
                 _ => match self.correct(0.5 * ds, false) {
                     Ok(mid) => {
                         let (pm, sm) = self.diagram_of(&mid.x, &mid.tangent);
-                        let hm = hermite::at(&start, &end, h, 0.5);
+                        let hm = hermite::at(&start, &end, h, 0.5, degree);
                         MIDPOINT_SAFETY * across(pm, sm, hm)
                     }
                     Err(_) => f64::INFINITY,
@@ -231,12 +253,17 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         located: &[(State, State, f64)],
     ) -> f64 {
         let start = self.start_jet();
+        let degree = self.degree();
         located
             .iter()
             .filter(|(.., s)| *s > 0.0 && *s < ds)
             .map(|(x, t, s)| {
                 let (p, slope) = self.diagram_of(x, t);
-                across(p, slope, hermite::at(&start, &fit.end, fit.length, s / ds))
+                across(
+                    p,
+                    slope,
+                    hermite::at(&start, &fit.end, fit.length, s / ds, degree),
+                )
             })
             .fold(0.0, f64::max)
     }

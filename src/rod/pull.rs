@@ -30,7 +30,7 @@
 //! 3 per coil, calibrated on the paper's spring), and through the
 //! continuation the mesh during the run (points checked against the
 //! halved mesh, remeshed by equidistribution), the steps (the quintic
-//! Hermite interpolation error, the tangent's angle, at most 0.4 rad, and its turn
+//! Hermite interpolation error, the cubic's at 1e-3 and looser, the tangent's angle, at most 0.4 rad, and its turn
 //! in the plane, the corrector's drift), the Newton and the location
 //! tolerances. What the run achieved is [`PullRun::estimate`]. Branch-point
 //! detection is off (the rod's phase condition keeps the pull free of
@@ -79,7 +79,8 @@ impl PullRun {
     /// The errors the run measured, in the plane (Δz, F/((2πn)²B)) of the
     /// paper's plots ([`ErrorEstimate`]): of the points against the halved
     /// mesh, of the located folds, and of the quintic Hermite interpolant
-    /// between points ([`ForceExtension::force_at`]).
+    /// between points (the cubic at tolerances of 1e-3 and looser;
+    /// [`ForceExtension::force_at`]).
     #[must_use]
     pub fn estimate(&self) -> ErrorEstimate {
         self.estimate
