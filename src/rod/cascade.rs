@@ -249,9 +249,7 @@ impl CuspSearch {
             t => Followed::Ended(t.clone()),
         })
     }
-}
 
-impl CuspSearch {
     /// Carries the fold `start` (a solution of `family` at a fold in the
     /// scaled force) to the scene (θ0 in radians, A/B, ν): continued in θ0,
     /// then in ln(A/B), then in ν ([`follow`](Self::follow), each leg to
