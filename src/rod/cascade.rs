@@ -203,7 +203,9 @@ impl CuspSearch {
     /// stops at the first cusp or at `to`, whichever comes first.
     ///
     /// # Errors
-    /// [`Error::InvalidCount`] for another parameter; the errors of
+    /// [`Error::InvalidCount`] for another parameter;
+    /// [`Error::LengthMismatch`] if `start` is not a solution of a
+    /// [`NikolaiRod`] (e.g. the [`Rod`]'s own); the errors of
     /// [`FoldContinuation::run`] at the start.
     pub fn follow(
         &self,
@@ -217,6 +219,13 @@ impl CuspSearch {
                 name: "fold-curve parameter",
                 value: parameter as u64,
                 allowed: "Rod::THETA0, NikolaiRod::LN_A_OVER_B or NikolaiRod::NU",
+            });
+        }
+        if start.parameters().len() != NikolaiRod::PARAMETERS {
+            return Err(Error::LengthMismatch {
+                name: "parameters of the fold (a solution of the NikolaiRod)",
+                found: start.parameters().len() as u64,
+                expected: NikolaiRod::PARAMETERS as u64,
             });
         }
         let from = start.parameters()[parameter];

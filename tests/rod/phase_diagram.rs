@@ -360,6 +360,17 @@ fn a_fold_carried_to_another_spring_is_the_fold_a_pull_finds_there() {
         nearest < CARRIED_FOLD,
         "carried {f}: {nearest:e} from the pull's nearest fold"
     );
+    // A fold of the rod itself (three parameters, not the family's five)
+    // is refused, not indexed past its end.
+    let (_, rod_fold) = family.restrict(&pops[0][0]);
+    assert!(matches!(
+        search.carry(&family, &rod_fold, scene),
+        Err(Error::LengthMismatch {
+            found: 3,
+            expected: 5,
+            ..
+        })
+    ));
     // A scene that is not a spring is refused before any continuation.
     for bad in [
         (1.5, -1.0, 0.1),
