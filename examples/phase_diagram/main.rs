@@ -33,7 +33,8 @@
 //! negative ν the maximum-force folds rise far above the reference's).
 //!
 //! `--forces` carries the reference pull's pop-outs (their two folds each,
-//! [`hockle::rod::CuspSearch::carry`]: in θ0, then A/B, then ν) to each
+//! [`hockle::rod::CuspSearch::carry`]: along a staircase about the straight
+//! line in (θ0, ln A/B, ν), four rounds of a leg in each) to each
 //! `--scene` and prints, after its line, one line per pop-out,
 //! `carried pop_out=<i> max=<F> min=<F>` (F/((2πn)²B) of its maximum- and
 //! minimum-force folds there: the hysteresis loop), or `vanished` with the

@@ -59,6 +59,7 @@ pub struct CuspSearch {
     curve_ds_max: f64,
     curve_max_angle: f64,
     max_steps: usize,
+    stairs: usize,
 }
 
 /// How a fold followed in one parameter ended ([`CuspSearch::follow`]).
@@ -90,6 +91,7 @@ impl CuspSearch {
     /// | [`curve_ds_max`](Self::curve_ds_max) | 5: the largest step of a cusp curve |
     /// | [`curve_max_angle`](Self::curve_max_angle) | 0.35 rad (the continuation's): the largest angle between tangents of a cusp curve |
     /// | [`max_steps`](Self::max_steps) | 400 per fold curve |
+    /// | [`stairs`](Self::stairs) | 4 rounds of [`carry`](Self::carry)'s legs |
     ///
     /// The fold curves use the pull's solution weights (r, q: 1; F:
     /// 1/((2πn)²B)²; M: 1e-3) and weight 1 for the parameters (the force
@@ -103,6 +105,7 @@ impl CuspSearch {
             curve_ds_max: 5.0,
             curve_max_angle: 0.35,
             max_steps: 400,
+            stairs: 4,
         }
     }
 
@@ -144,6 +147,18 @@ impl CuspSearch {
     #[must_use]
     pub fn max_steps(mut self, n: usize) -> Self {
         self.max_steps = n;
+        self
+    }
+
+    /// The most rounds of [`carry`](Self::carry)'s staircase.
+    pub const MAX_STAIRS: usize = 64;
+
+    /// Rounds of the three legs of [`carry`](Self::carry), 1..=
+    /// [`MAX_STAIRS`](Self::MAX_STAIRS) (checked by `carry`): one goes the
+    /// whole way in each parameter in turn.
+    #[must_use]
+    pub fn stairs(mut self, n: usize) -> Self {
+        self.stairs = n;
         self
     }
 
@@ -260,9 +275,11 @@ impl CuspSearch {
     }
 
     /// Carries the fold `start` (a solution of `family` at a fold in the
-    /// scaled force) to the scene (θ0 in radians, A/B, ν): continued in θ0,
-    /// then in ln(A/B), then in ν ([`follow`](Self::follow), each leg to
-    /// the scene's value). `Reached` gives the fold at the scene, so its
+    /// scaled force) to the scene (θ0 in radians, A/B, ν) along a
+    /// staircase about the straight line from `start`'s parameters in
+    /// (θ0, ln A/B, ν): [`stairs`](Self::stairs) rounds of three legs, in
+    /// θ0, then ln(A/B), then ν ([`follow`](Self::follow)), each round
+    /// covering its share of the way in each. `Reached` gives the fold at the scene, so its
     /// force F/((2πn)²B) ([`NikolaiRod::FORCE_SCALED`]); carrying both folds
     /// of a pop-out gives its maximum and minimum force there, the width of
     /// its hysteresis loop. `Cusp` says the pop-out vanishes on this path
@@ -271,30 +288,71 @@ impl CuspSearch {
     /// the whole path. Returned with the parameter of the leg that ended
     /// it ([`NikolaiRod::NU`] when the scene was reached).
     ///
+    /// Why a staircase: with one round the path goes the whole way in θ0
+    /// at the reference's ν before it moves ν, and a region that reaches
+    /// the scene need not reach that corner: carried so to (87°, 10, −0.3),
+    /// pop-outs 1 and 2 vanished at θ0 = 87.485° and 87.176° (their cusps
+    /// at ν = 0.05), ν first met the re-pairings near 90° instead; four
+    /// rounds carry them to 3.3935 and 5.2553, the pull's 3.3937 and
+    /// 5.2539 within the 48 intervals' error at these forces, and eight
+    /// rounds give the same to the printed digits (docs/ACCURACY.md).
+    ///
     /// # Errors
-    /// The errors of [`Stiffness::nikolai`] and [`Rod::new`] for a scene
+    /// [`Error::InvalidCount`] for [`stairs`](Self::stairs) outside
+    /// 1..=[`MAX_STAIRS`](Self::MAX_STAIRS); the errors of
+    /// [`Stiffness::nikolai`] and [`Rod::new`] for a scene
     /// that is not a spring (θ0 outside (0, π/2], A/B not positive and
-    /// finite, ν outside (−1, ½]); those of [`follow`](Self::follow).
+    /// finite, ν outside (−1, ½]); [`Error::LengthMismatch`] for a `start`
+    /// that is not a solution of a [`NikolaiRod`]; those of
+    /// [`follow`](Self::follow).
     pub fn carry(
         &self,
         family: &NikolaiRod,
         start: &Solution,
         (theta0, a_over_b, nu): (f64, f64, f64),
     ) -> Result<(usize, Followed)> {
+        if !(1..=Self::MAX_STAIRS).contains(&self.stairs) {
+            return Err(Error::InvalidCount {
+                name: "stairs",
+                value: self.stairs as u64,
+                allowed: "1..=64 rounds of the three legs (CuspSearch::MAX_STAIRS)",
+            });
+        }
         Rod::new(
             family.rod().coils(),
             theta0,
             Stiffness::nikolai(a_over_b, nu)?,
         )?;
+        if start.parameters().len() != NikolaiRod::PARAMETERS {
+            return Err(Error::LengthMismatch {
+                name: "parameters of the fold (a solution of the NikolaiRod)",
+                found: start.parameters().len() as u64,
+                expected: NikolaiRod::PARAMETERS as u64,
+            });
+        }
         let mut at = start.clone();
-        for (parameter, to) in [
-            (Rod::THETA0, theta0),
-            (NikolaiRod::LN_A_OVER_B, a_over_b.ln()),
-            (NikolaiRod::NU, nu),
-        ] {
-            match self.follow(family, &at, parameter, to)? {
-                Followed::Reached(fold) => at = *fold,
-                ended => return Ok((parameter, ended)),
+        let p = start.parameters();
+        let legs = [
+            (Rod::THETA0, p[Rod::THETA0], theta0),
+            (
+                NikolaiRod::LN_A_OVER_B,
+                p[NikolaiRod::LN_A_OVER_B],
+                a_over_b.ln(),
+            ),
+            (NikolaiRod::NU, p[NikolaiRod::NU], nu),
+        ];
+        let stairs = self.stairs;
+        for k in 1..=stairs {
+            for &(parameter, from, to) in &legs {
+                let to = if k == stairs {
+                    to
+                } else {
+                    from + (to - from) * k as f64 / stairs as f64
+                };
+                match self.follow(family, &at, parameter, to)? {
+                    Followed::Reached(fold) => at = *fold,
+                    ended => return Ok((parameter, ended)),
+                }
             }
         }
         Ok((NikolaiRod::NU, Followed::Reached(Box::new(at))))
