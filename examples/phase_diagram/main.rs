@@ -42,6 +42,12 @@
 //! `ended` with the reason: the forces that the diagram's count does not
 //! give, without pulling the scene to them.
 //!
+//! `--force-map` maps the reference pop-outs' maximum and minimum forces
+//! over a grid of (θ0, ν) at A/B = 10 (`force_map.rs`): one line per grid
+//! point and pop-out, `force_map theta0=<deg> nu=<x> pop_out=<i> max=<F>
+//! min=<F>` (`-` where the fold is not reached on the grid's lines), and a
+//! Markdown table per pop-out on standard error.
+//!
 //! `--scene THETA0_DEG,A_OVER_B,NU` (repeatable) prints one line per scene,
 //! `scene theta0=<deg> a_over_b=<x> nu=<x> pop_outs=<count>`, read off the
 //! diagram ([`hockle::rod::PhaseDiagram::pop_outs`]), not from a pull;
@@ -107,7 +113,7 @@ const SAME_CUSP_FORCE: f64 = 1e-3;
 const INTERVALS: usize = 24;
 
 fn usage() -> String {
-    "usage: phase_diagram [--coils N] [--out DIR] [--compute | --extend CSV | --check] [--scene THETA0_DEG,A_OVER_B,NU]… [--pull F]".into()
+    "usage: phase_diagram [--coils N] [--out DIR] [--compute | --extend CSV | --check] [--scene THETA0_DEG,A_OVER_B,NU]… [--pull F] [--forces] [--force-map]".into()
 }
 
 fn at(p: &FoldPoint) -> CuspAt {
@@ -603,6 +609,7 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
     let (mut coils, mut force, mut scenes, mut checks) = (4_u32, false, Vec::new(), false);
     let mut pull_to: Option<f64> = None;
     let mut carry = false;
+    let mut map = false;
     let mut extend: Option<PathBuf> = None;
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
@@ -626,6 +633,7 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
             }
             "--check" => checks = true,
             "--forces" => carry = true,
+            "--force-map" => map = true,
             "--coils" => {
                 let v = args.next().ok_or("--coils needs a number")?;
                 coils = v
@@ -651,6 +659,12 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
     }
     if checks {
         return check(coils);
+    }
+    if map {
+        let family = reference_family(coils)?;
+        let search = carry_search();
+        let pops = search.pop_outs(&family, 3.0)?;
+        return force_map::print(&search, &family, &pops, A_OVER_B);
     }
     for &(t, a, nu) in &scenes {
         let check = |ok: bool, what: &str| -> Result<(), Box<dyn Error + Send + Sync>> {
@@ -828,4 +842,5 @@ fn pull_scene(
     Ok(())
 }
 
+mod force_map;
 mod svg;
