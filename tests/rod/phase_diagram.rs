@@ -313,13 +313,9 @@ const SCENES_N8: [(f64, f64, f64, usize, f64); 8] = [
     (82.0, 10.0, -0.4, 24, 3.0),
 ];
 
-/// A fold carried by continuation from the paper's spring to another one
-/// against the same fold found there by an adaptive pull: two computations
-/// that share only the rod's equations (fold continuation of the
-/// extended system on a uniform mesh of 48 intervals against a pull's
-/// located fold on its own adaptive mesh).
-#[test]
-fn a_fold_carried_to_another_spring_is_the_fold_a_pull_finds_there() {
+/// The paper's spring as a `NikolaiRod`, the default search, and its
+/// three pop-outs (pulled to F/((2πn)²B) = 3 on the search's mesh).
+fn paper_pop_outs() -> (NikolaiRod, CuspSearch, Vec<[hockle::bvp::Solution; 2]>) {
     let rod = Rod::new(
         4,
         89.8_f64.to_radians(),
@@ -329,6 +325,17 @@ fn a_fold_carried_to_another_spring_is_the_fold_a_pull_finds_there() {
     let family = NikolaiRod::new(rod, 0.05).unwrap();
     let search = CuspSearch::new();
     let pops = search.pop_outs(&family, 3.0).unwrap();
+    (family, search, pops)
+}
+
+/// A fold carried by continuation from the paper's spring to another one
+/// against the same fold found there by an adaptive pull: two computations
+/// that share only the rod's equations (fold continuation of the
+/// extended system on a uniform mesh of 48 intervals against a pull's
+/// located fold on its own adaptive mesh).
+#[test]
+fn a_fold_carried_to_another_spring_is_the_fold_a_pull_finds_there() {
+    let (family, search, pops) = paper_pop_outs();
     assert_eq!(pops.len(), 3);
     let scene = (89.5_f64.to_radians(), 8.0, 0.1);
     let (leg, carried) = search.carry(&family, &pops[0][0], scene).unwrap();
@@ -398,15 +405,7 @@ const CARRIED_FOLD: f64 = 2e-6;
 /// stays in its region and reaches the pull's fold.
 #[test]
 fn a_staircase_carries_a_fold_that_one_leg_at_a_time_loses() {
-    let rod = Rod::new(
-        4,
-        89.8_f64.to_radians(),
-        Stiffness::nikolai(10.0, 0.05).unwrap(),
-    )
-    .unwrap();
-    let family = NikolaiRod::new(rod, 0.05).unwrap();
-    let search = CuspSearch::new();
-    let pops = search.pop_outs(&family, 3.0).unwrap();
+    let (family, search, pops) = paper_pop_outs();
     let scene = (87_f64.to_radians(), 10.0, -0.3);
     let (leg, lost) = search.stairs(1).carry(&family, &pops[0][0], scene).unwrap();
     assert!(
