@@ -45,8 +45,9 @@
 //! `--force-map` maps the reference pop-outs' maximum and minimum forces
 //! over a grid of (θ0, ν) at A/B = 10 (`force_map.rs`): one line per grid
 //! point and pop-out, `force_map theta0=<deg> nu=<x> pop_out=<i> max=<F>
-//! min=<F>` (`-` where the fold is not reached on the grid's lines), and a
-//! Markdown table per pop-out on standard error.
+//! min=<F>` (`-` where the fold is reached neither along the grid's lines
+//! nor by a carry of its own), and a Markdown table per pop-out on standard
+//! error.
 //!
 //! `--scene THETA0_DEG,A_OVER_B,NU` (repeatable) prints one line per scene,
 //! `scene theta0=<deg> a_over_b=<x> nu=<x> pop_outs=<count>`, read off the
