@@ -236,13 +236,7 @@ impl CuspSearch {
                 allowed: "Rod::THETA0, NikolaiRod::LN_A_OVER_B or NikolaiRod::NU",
             });
         }
-        if start.parameters().len() != NikolaiRod::PARAMETERS {
-            return Err(Error::LengthMismatch {
-                name: "parameters of the fold (a solution of the NikolaiRod)",
-                found: start.parameters().len() as u64,
-                expected: NikolaiRod::PARAMETERS as u64,
-            });
-        }
+        of_the_family(start)?;
         let from = start.parameters()[parameter];
         if from == to {
             return Ok(Followed::Reached(Box::new(start.clone())));
@@ -323,13 +317,7 @@ impl CuspSearch {
             theta0,
             Stiffness::nikolai(a_over_b, nu)?,
         )?;
-        if start.parameters().len() != NikolaiRod::PARAMETERS {
-            return Err(Error::LengthMismatch {
-                name: "parameters of the fold (a solution of the NikolaiRod)",
-                found: start.parameters().len() as u64,
-                expected: NikolaiRod::PARAMETERS as u64,
-            });
-        }
+        of_the_family(start)?;
         let mut at = start.clone();
         let p = start.parameters();
         let legs = [
@@ -357,6 +345,19 @@ impl CuspSearch {
         }
         Ok((NikolaiRod::NU, Followed::Reached(Box::new(at))))
     }
+}
+
+/// [`Error::LengthMismatch`] unless `start` has a [`NikolaiRod`]'s
+/// parameters (a fold of the [`Rod`] itself has three).
+fn of_the_family(start: &Solution) -> Result<()> {
+    if start.parameters().len() == NikolaiRod::PARAMETERS {
+        return Ok(());
+    }
+    Err(Error::LengthMismatch {
+        name: "parameters of the fold (a solution of the NikolaiRod)",
+        found: start.parameters().len() as u64,
+        expected: NikolaiRod::PARAMETERS as u64,
+    })
 }
 
 /// Stops a fold curve at its first cusp.
