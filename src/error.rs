@@ -202,6 +202,19 @@ pub enum Error {
         /// The tolerance asked for.
         tolerance: f64,
     },
+    /// A point pinned along near-null modes (a loop sliding along the rod)
+    /// lies farther across the branch from the equilibrium the modes would
+    /// slide to than the tolerance allows.
+    #[error(
+        "a point pinned along near-null modes is {across:e} across the branch from the \
+         equilibrium they slide to (at most {allowed:e} allowed): a shorter step is tried"
+    )]
+    SlideNotNegligible {
+        /// The first-order distance across the branch, in the diagram's plane.
+        across: f64,
+        /// The most allowed (a fraction of the tolerance).
+        allowed: f64,
+    },
     /// The adaptive mesh could not meet the tolerance within the interval limit.
     #[error(
         "error estimate {estimate:e} > tolerance {tolerance:e} with {intervals} intervals \

@@ -50,6 +50,14 @@
 //! mesh points behaves like C_m h^(m+1) |y^(m+1)|, so the mesh that
 //! equidistributes |y^(m+1)|^(1/(m+1)) (AUTO's IAD) with just enough
 //! intervals for the tolerance is the coarsest that meets it.
+//!
+//! A system can pin near-null modes (`system/pin.rs`): where Newton fails
+//! on a Jacobian with a few singular values 10⁴ and more below the rest (a
+//! loop sliding along a rod under tension), those modes are found from
+//! random solves and every later solve drops its components along them.
+//! Continuation with a tolerance uses it (see `Continuation::tolerance`);
+//! a plain [`Collocation`] solve never pins: its solution solves the
+//! equations, not a problem unfolded along the modes.
 
 #![allow(clippy::needless_range_loop)]
 
@@ -73,4 +81,4 @@ pub use system::LinearSolver;
 
 pub(crate) use adapt::{density, equidistribute};
 pub(crate) use guess::state_on_mesh;
-pub(crate) use newton::{NewtonOptions, finish, newton, scaled_norm};
+pub(crate) use newton::{NewtonOptions, finish, newton, newton_pinned, scaled_norm};

@@ -131,6 +131,32 @@ pub(crate) fn newton<P: Problem + ?Sized>(
     })
 }
 
+/// Newton again from `x`, where [`newton`] failed (damping could not
+/// reduce the correction, or the iterations ran out), with the near-null
+/// modes of the system there pinned ([`System::find_pinned_modes`]).
+/// Pinning stays enabled on success: later factorisations pin the modes
+/// they find. On failure it is disabled. Returns `None` where the system has no
+/// near-null modes at `x` or the pinned iteration fails too (x unchanged).
+pub(crate) fn newton_pinned<P: Problem + ?Sized>(
+    sys: &mut System<'_, P>,
+    x: &mut State,
+    opts: NewtonOptions,
+) -> Option<NewtonStats> {
+    if sys.factor(x).is_err() {
+        return None;
+    }
+    sys.find_pinned_modes();
+    let mut pinned = x.clone();
+    if sys.pinned_modes() > 0
+        && let Ok(stats) = newton(sys, &mut pinned, opts, true)
+    {
+        *x = pinned;
+        return Some(stats);
+    }
+    sys.disable_pinning();
+    None
+}
+
 /// Builds the public solution from a converged state.
 pub(crate) fn finish<P: Problem + ?Sized>(
     sys: &mut System<'_, P>,

@@ -5,7 +5,7 @@ use super::Steps;
 use super::difference::{Difference, derivative_on};
 use super::norm::IntegralNorm;
 use crate::bvp::system::{State, System};
-use crate::bvp::{NewtonStats, Problem, newton, scaled_norm};
+use crate::bvp::{NewtonStats, Problem, newton, newton_pinned, scaled_norm};
 use crate::error::{Error, Result};
 use crate::linalg::Det;
 
@@ -24,6 +24,30 @@ use crate::linalg::Det;
 /// limit (16 min and more for one pull). 10 was not enough for n = 16
 /// (1.5e-9 after the quintic dense output).
 pub(super) const STUCK_FLOOR: f64 = 100.0;
+
+/// With a tolerance, the most a corrected point pinned along near-null
+/// modes ([`crate::bvp::newton_pinning`]) may lie across the branch from
+/// the equilibrium its modes would slide to, to first order, as a fraction
+/// of the tolerance; a farther point is rejected
+/// ([`Error::SlideNotNegligible`]) and the step shortened. The distances
+/// accepted are added to the run's estimate ([`ErrorEstimate::pinned`]),
+/// so the budget is what the tolerance can spare beside the mesh and
+/// interpolation errors, which the estimates overstate about twofold
+/// (docs/ACCURACY.md). Measured on the rod with loops sliding (ν = −0.5,
+/// n = 4, F/((2πn)²B) = 8–11, tol 1e-6): 8e-9 to 1.4e-7 across, while the
+/// pinned part itself moved the point up to 1.6e-4 along the branch.
+///
+/// [`ErrorEstimate::pinned`]: super::ErrorEstimate::pinned
+pub(super) const PINNED_ACROSS: f64 = 0.25;
+
+/// Whether a Newton failure is a stall (damping could not reduce the
+/// correction, or the iterations ran out), not a failed evaluation.
+fn stalled(e: &Error) -> bool {
+    matches!(
+        e,
+        Error::NewtonDiverged { .. } | Error::NewtonNotConverged { .. }
+    )
+}
 
 /// Sets the border row of `sys` to the hyperplane ⟨· − x, t⟩ = ds of the
 /// integral norm `norm` (on the system's mesh); `xcol`, `tcol` are work
@@ -179,24 +203,20 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         if reuse {
             self.sys.factor_border()?;
         }
-        let stats = match newton(&mut self.sys, &mut x, self.opts, reuse) {
-            Ok(stats) => stats,
-            // (robust10c) with a tolerance: Newton stuck at its rounding
-            // floor within `STUCK_FLOOR` times its tolerance is converged
-            // (counted as the most iterations, so the next step is shorter)
-            Err(
-                Error::NewtonDiverged { correction, .. }
-                | Error::NewtonNotConverged { correction, .. },
-            ) if self.cont.tolerance.is_some() && correction <= STUCK_FLOOR * self.opts.tol => {
-                NewtonStats {
-                    iterations: self.opts.max_iter,
-                    jacobians: 1,
-                    correction,
-                }
-            }
-            Err(e) => return Err(e),
-        };
+        let stats = self.corrector_newton(&mut x, reuse)?;
         self.newton_iterations += u64::from(stats.iterations);
+        if let Some(tol) = self.cont.tolerance
+            && self.sys.pinned_modes() > 0
+        {
+            let across = self.pinned_across(&x)?;
+            if across.is_nan() || across > PINNED_ACROSS * tol {
+                return Err(Error::SlideNotNegligible {
+                    across,
+                    allowed: PINNED_ACROSS * tol,
+                });
+            }
+            self.estimate.pinned = self.estimate.pinned.max(across);
+        }
         // Without branch-point detection the determinant is not needed: when
         // the chord corrector converged fast on the old factorisation (with
         // a tolerance: on any factorisation it made), keep it and refine the
@@ -231,6 +251,88 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
             det,
             iterations: stats.iterations,
         })
+    }
+
+    /// Newton for the corrector from the predicted `x`, and where it
+    /// stalls with a tolerance: a point stuck at the rounding floor is kept
+    /// ([`Self::stuck`]); otherwise, with
+    /// [`pin_slides`](super::Continuation::pin_slides), a pinned system
+    /// tries again unpinned from the prediction (its modes may have
+    /// stopped being null), and a system with near-null modes at the last
+    /// iterate tries again pinned ([`newton_pinned`]), after which the run
+    /// pins wherever Newton stalls.
+    fn corrector_newton(&mut self, x: &mut State, reuse: bool) -> Result<NewtonStats> {
+        let predicted = x.clone();
+        let failure = match newton(&mut self.sys, x, self.opts, reuse) {
+            Ok(stats) => return Ok(stats),
+            Err(e) => e,
+        };
+        if self.cont.tolerance.is_none() {
+            return Err(failure);
+        }
+        if let Some(stats) = self.stuck(&failure) {
+            return Ok(stats);
+        }
+        if !self.cont.pin_slides || !stalled(&failure) {
+            return Err(failure);
+        }
+        let mut failure = failure;
+        if self.sys.is_pinning() {
+            self.sys.disable_pinning();
+            x.clone_from(&predicted);
+            match newton(&mut self.sys, x, self.opts, false) {
+                Ok(stats) => return Ok(stats),
+                Err(e) => {
+                    if let Some(stats) = self.stuck(&e) {
+                        return Ok(stats);
+                    }
+                    failure = e;
+                }
+            }
+        }
+        let mut pinned = x.clone();
+        match newton_pinned(&mut self.sys, &mut pinned, self.opts) {
+            Some(stats) => {
+                *x = pinned;
+                Ok(stats)
+            }
+            None => Err(failure),
+        }
+    }
+
+    /// (robust10c) The statistics of a Newton that failed stuck at its
+    /// rounding floor, within [`STUCK_FLOOR`] times its tolerance: its
+    /// point is kept, counted as the most iterations (so the next step is
+    /// shorter).
+    fn stuck(&self, e: &Error) -> Option<NewtonStats> {
+        match e {
+            Error::NewtonDiverged { correction, .. }
+            | Error::NewtonNotConverged { correction, .. }
+                if *correction <= STUCK_FLOOR * self.opts.tol =>
+            {
+                Some(NewtonStats {
+                    iterations: self.opts.max_iter,
+                    jacobians: 1,
+                    correction: *correction,
+                })
+            }
+            _ => None,
+        }
+    }
+
+    /// How far across the branch the pinned point `x` lies from the
+    /// equilibrium its pinned modes would slide to, to first order: the
+    /// diagram's change along the part of the unpinned Newton correction
+    /// in the modes' span, measured across the slope at x₀ (along the
+    /// branch it only moves the point on the curve).
+    fn pinned_across(&mut self, x: &State) -> Result<f64> {
+        let mut res = self.sys.zero_residual();
+        self.sys.residual(x, &mut res)?;
+        let part = self.sys.pinned_part(&res)?;
+        let change = self.diagram_of(x, &part).1;
+        let t0 = self.t0.clone();
+        let slope = self.diagram_of(x, &t0).1;
+        Ok(super::hermite::across([0.0; 2], slope, change))
     }
 
     /// The tangent at `x` without a new factorisation: iterative

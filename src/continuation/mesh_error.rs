@@ -22,7 +22,9 @@ use super::Steps;
 use super::corrector::{STUCK_FLOOR, border_rhs_solution, refine_border_solution, set_hyperplane};
 use super::norm::IntegralNorm;
 use crate::bvp::system::{State, System};
-use crate::bvp::{Mesh, NewtonOptions, Problem, density, equidistribute, newton, state_on_mesh};
+use crate::bvp::{
+    Mesh, NewtonOptions, Problem, density, equidistribute, newton, newton_pinned, state_on_mesh,
+};
 use crate::error::{Error, Result};
 
 /// The error of a point is estimated as this multiple of its distance to
@@ -48,6 +50,11 @@ pub struct ErrorEstimate {
     /// The largest interpolation error estimate of a step's quintic
     /// Hermite interpolant.
     pub interpolation: f64,
+    /// The largest distance across the branch, to first order, between a
+    /// point pinned along near-null modes and the equilibrium the modes
+    /// would slide to (0 where nothing was pinned; see
+    /// [`Continuation::tolerance`](super::Continuation::tolerance)).
+    pub pinned: f64,
     /// Points checked against the halved mesh.
     pub checks: u32,
     /// Remeshes (finer or coarser) during the run.
@@ -60,10 +67,10 @@ pub struct ErrorEstimate {
 
 impl ErrorEstimate {
     /// The estimated error of the curve between its points: the mesh error
-    /// plus the interpolation error.
+    /// plus the pinning's plus the interpolation error.
     #[must_use]
     pub fn curve(&self) -> f64 {
-        self.mesh + self.interpolation
+        self.mesh + self.pinned + self.interpolation
     }
 }
 
@@ -71,14 +78,16 @@ impl core::fmt::Display for ErrorEstimate {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         write!(
             f,
-            "estimated error: points {:.1e} (located {:.1e}), interpolation {:.1e}; {} checks, {} remeshes, {} intervals (max {})",
-            self.mesh,
-            self.located,
-            self.interpolation,
-            self.checks,
-            self.remeshes,
-            self.intervals,
-            self.max_intervals
+            "estimated error: points {:.1e} (located {:.1e}",
+            self.mesh, self.located
+        )?;
+        if self.pinned > 0.0 {
+            write!(f, ", pinned {:.1e}", self.pinned)?;
+        }
+        write!(
+            f,
+            "), interpolation {:.1e}; {} checks, {} remeshes, {} intervals (max {})",
+            self.interpolation, self.checks, self.remeshes, self.intervals, self.max_intervals
         )
     }
 }
@@ -192,6 +201,10 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         let Some(h) = self.halved.as_mut() else {
             unreachable!("set above")
         };
+        // modes pinned on one mesh are pinned on the other
+        if self.sys.is_pinning() {
+            h.sys.enable_pinning();
+        }
         // the last check's factorisation starts the corrector when it was
         // made in this step (the located points' checks and the new
         // point's, a fold's secant): from a few steps back its chord
@@ -231,6 +244,15 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
                     Error::NewtonDiverged { correction, .. }
                     | Error::NewtonNotConverged { correction, .. },
                 ) if correction <= floor => {}
+                // stalled on near-null modes in a run that pins: pinned, as
+                // the corrector's
+                Err(e @ (Error::NewtonDiverged { .. } | Error::NewtonNotConverged { .. }))
+                    if h.sys.is_pinning() =>
+                {
+                    if newton_pinned(&mut h.sys, &mut fine, opts).is_none() {
+                        return Err(e);
+                    }
+                }
                 Err(e) => return Err(e),
             }
             if !fold {
@@ -277,6 +299,9 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         let (p, _) = diagram.point_and_slope(q, n, (&fine, &xcol), (&ts, &tcol), &h.norm);
         self.estimate.checks += 1;
         let difference = (p[0] - coarse[0]).abs().max((p[1] - coarse[1]).abs());
+        if self.halved.as_ref().is_some_and(|h| h.sys.is_pinning()) {
+            self.sys.enable_pinning();
+        }
         Ok(MESH_SAFETY * difference)
     }
 
@@ -299,6 +324,9 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             1,
         )?;
         sys.linear = self.sys.linear;
+        if self.sys.is_pinning() {
+            sys.enable_pinning();
+        }
         let norm = self.norm_on(&mesh);
         let x = state_on_mesh(&self.x0, &self.mesh, &tab, n, &mesh);
         let t = state_on_mesh(&self.t0, &self.mesh, &tab, n, &mesh);
@@ -308,7 +336,17 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         sys.y_ref.clone_from(&xcol);
         set_hyperplane(&mut sys, &norm, (&x, &t), 0.0, (&mut xcol, &mut tcol));
         let mut corrected = x;
-        let stats = newton(&mut sys, &mut corrected, self.opts, false)?;
+        let stats = match newton(&mut sys, &mut corrected, self.opts, false) {
+            Ok(stats) => stats,
+            // stalled on near-null modes in a run that pins: pinned, as
+            // the corrector's
+            Err(e @ (Error::NewtonDiverged { .. } | Error::NewtonNotConverged { .. }))
+                if sys.is_pinning() =>
+            {
+                newton_pinned(&mut sys, &mut corrected, self.opts).ok_or(e)?
+            }
+            Err(e) => return Err(e),
+        };
         self.newton_iterations += u64::from(stats.iterations);
         // The tangent on the new mesh: [F_x; τ₀ᵀ] τ = e at the corrected
         // point, oriented along the old one.

@@ -60,6 +60,7 @@ pub struct Continuation {
     pub(super) events: Vec<EventFn>,
     pub(super) tolerance: Option<f64>,
     pub(super) adapt_mesh: bool,
+    pub(super) pin_slides: bool,
     pub(super) diagram: Diagram,
 }
 
@@ -75,6 +76,7 @@ impl fmt::Debug for Continuation {
             .field("stops", &self.stops)
             .field("events", &self.events.len())
             .field("tolerance", &self.tolerance)
+            .field("pin_slides", &self.pin_slides)
             .field("diagram", &self.diagram)
             .finish_non_exhaustive()
     }
@@ -138,6 +140,7 @@ impl Continuation {
             events: Vec::new(),
             tolerance: None,
             adapt_mesh: true,
+            pin_slides: false,
             diagram: Diagram::default(),
         }
     }
@@ -301,6 +304,30 @@ impl Continuation {
     #[must_use]
     pub fn adapt_mesh(mut self, on: bool) -> Self {
         self.adapt_mesh = on;
+        self
+    }
+
+    /// With a [`tolerance`](Self::tolerance), experimental (default off):
+    /// where the corrector's Newton stalls on a system with near-null modes
+    /// (a few singular values 10⁴ and more below the rest: a loop sliding
+    /// along a rod under tension, held only by end effects), pin those
+    /// modes from then on (`src/bvp/system/pin.rs`): every solve drops its
+    /// components along them, so Newton converges in the other directions
+    /// instead of stalling on rounding amplified by 10¹⁰ and more. A pinned
+    /// point is kept when its first-order distance across the branch from
+    /// the equilibrium the modes would slide to is at most a quarter of the
+    /// tolerance; that distance is part of the estimate
+    /// ([`ErrorEstimate::pinned`](super::ErrorEstimate::pinned)).
+    ///
+    /// Where the modes stop being null (a sliding loop reaching an end or
+    /// another loop, as at a pop-out), the pinned run can fail where the
+    /// unpinned one goes on: measured on the rod in docs/ACCURACY.md
+    /// ("Sliding loops"), faster and within its tolerance on springs whose
+    /// loops slide without popping out, failing on others. Off, nothing of
+    /// it runs.
+    #[must_use]
+    pub fn pin_slides(mut self, on: bool) -> Self {
+        self.pin_slides = on;
         self
     }
 

@@ -172,6 +172,8 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         let mut d = c.x.clone();
         d.axpy(-1.0, &self.x0.clone(), &free);
         d.axpy(-ds, &self.t0.clone(), &free);
+        // (a slide along pinned modes is no drift)
+        self.sys.project_pinned(&mut d);
         let drift = self.norm(&d) / ds;
         let start = self.start_jet();
         let end = self.jet(&c.x, &c.tangent);

@@ -146,7 +146,7 @@ impl PullRun {
     #[must_use]
     pub fn meets_tolerance(&self) -> bool {
         let e = self.estimate;
-        e.located.max(e.curve()) <= self.tolerance
+        (e.located + e.pinned).max(e.curve()) <= self.tolerance
     }
 
     /// Accepted continuation steps.
@@ -197,7 +197,7 @@ impl core::fmt::Display for PullRun {
                 f,
                 "  the tolerance {:.0e} is NOT met: estimated error {:.1e}",
                 self.tolerance,
-                self.estimate.located.max(self.estimate.curve())
+                (self.estimate.located + self.estimate.pinned).max(self.estimate.curve())
             )?;
         }
         for fold in &self.folds {
@@ -238,6 +238,7 @@ pub struct Pull {
     max_steps: usize,
     max_angle: f64,
     locate_folds: bool,
+    pin_slides: bool,
 }
 
 /// Largest load, in the controlled quantity, of the second equilibrium that
@@ -290,6 +291,7 @@ impl Pull {
     /// | [`max_steps`](Self::max_steps) | 20 000 |
     /// | [`max_angle`](Self::max_angle) | 0.4 rad between successive tangents |
     /// | [`locate_folds`](Self::locate_folds) | yes |
+    /// | [`pin_slides`](Self::pin_slides) | no (experimental) |
     ///
     /// Setters do not fail; [`Pull::check`] (called by [`Pull::run`] and
     /// [`Pull::start`] before any work) validates every setting and the
@@ -308,6 +310,7 @@ impl Pull {
             max_steps: 20_000,
             max_angle: 0.4,
             locate_folds: true,
+            pin_slides: false,
         }
     }
 
@@ -374,6 +377,20 @@ impl Pull {
     #[must_use]
     pub fn locate_folds(mut self, on: bool) -> Self {
         self.locate_folds = on;
+        self
+    }
+
+    /// Experimental: pin loops that slide along the rod where the
+    /// corrector's Newton stalls on them
+    /// ([`Continuation::pin_slides`]). At negative ν the loops left in the
+    /// rod at high tension slide at an exponentially small cost and the
+    /// unpinned pull crawls or fails there; pinned, the paper's spring with
+    /// ν = −0.5 reaches F/((2πn)²B) = 14 within 1e-6 in about a second. It
+    /// can fail where the loops stop sliding freely (near a pop-out, or at
+    /// higher forces): docs/ACCURACY.md, "Sliding loops".
+    #[must_use]
+    pub fn pin_slides(mut self, on: bool) -> Self {
+        self.pin_slides = on;
         self
     }
 
@@ -586,6 +603,7 @@ impl Pull {
             .max_angle(self.max_angle)
             .tolerance(self.tolerance)
             .adapt_mesh(self.intervals.is_none())
+            .pin_slides(self.pin_slides)
             .diagram(output, lambda_scale, output_scale)
             .detect_folds(self.locate_folds)
             .detect_branch_points(false)

@@ -147,7 +147,9 @@ impl Spring {
         let mut run = pull(rod_tolerance)?;
         let reported = |run: &crate::rod::PullRun| match question {
             // the folds are located points: their error is the mesh's
-            Question::PopOuts { .. } => ROD_ESTIMATE_SAFETY * run.estimate().mesh,
+            Question::PopOuts { .. } => {
+                ROD_ESTIMATE_SAFETY * (run.estimate().mesh + run.estimate().pinned)
+            }
             _ => ROD_ESTIMATE_SAFETY * run.estimate().curve(),
         };
         if reported(&run) > tolerance && rod_tolerance / RETRY_DIVISOR >= MIN_ROD_TOLERANCE {

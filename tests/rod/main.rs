@@ -11,6 +11,7 @@ mod jacobians;
 mod phase_diagram;
 mod planar;
 mod planar_guess;
+mod slides;
 mod stability;
 mod tolerance;
 mod unstressed;

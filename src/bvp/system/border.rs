@@ -52,6 +52,16 @@ impl<P: Problem + ?Sized> System<'_, P> {
     /// # Errors
     /// [`Error::SingularJacobian`] ("boundary block" or "sparse system").
     pub(crate) fn factor_border(&mut self) -> Result<Det> {
+        let det = self.factor_final()?;
+        if self.pinning {
+            self.find_pinned_modes();
+        }
+        Ok(det)
+    }
+
+    /// [`factor_border`](Self::factor_border) without the search for
+    /// pinned modes.
+    pub(super) fn factor_final(&mut self) -> Result<Det> {
         if self.active() == LinearSolver::SparseLu {
             return self.factor_sparse();
         }

@@ -286,6 +286,14 @@ impl<P: Problem + ?Sized> System<'_, P> {
     /// whole system singular: the Jacobian is then factored by the sparse
     /// LU on the full system (the determinant is then unknown: NaN).
     pub(crate) fn factor(&mut self, x: &State) -> Result<Det> {
+        let det = self.factor_unpinned(x)?;
+        if self.pinning {
+            self.find_pinned_modes();
+        }
+        Ok(det)
+    }
+
+    fn factor_unpinned(&mut self, x: &State) -> Result<Det> {
         self.fallback = false;
         match self.factor_with(x, self.linear) {
             Err(Error::SingularJacobian {
@@ -343,7 +351,7 @@ impl<P: Problem + ?Sized> System<'_, P> {
         }
         self.wdet = wdet;
         self.eliminate_mesh()?;
-        self.factor_border()
+        self.factor_final()
     }
 
     /// At least `groups` workspaces.

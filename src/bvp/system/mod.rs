@@ -37,6 +37,7 @@ mod border;
 mod condense;
 mod eliminate;
 mod jacobian;
+mod pin;
 mod residual;
 mod solve;
 mod sparse;
@@ -202,6 +203,12 @@ pub(crate) struct System<'a, P: Problem + ?Sized> {
     sparse: SparseSystem,
     factored: bool,
     fallback: bool,
+    /// Whether each factorisation searches for near-null modes to pin
+    /// ([`pin`]).
+    pinning: bool,
+    /// The near-null modes found at the last factorisation, orthonormal;
+    /// solves remove their components.
+    pinned: Vec<State>,
 }
 
 pub(super) fn map_breakdown(b: Breakdown, block: &'static str, index: usize) -> Error {
@@ -361,6 +368,8 @@ impl<'a, P: Problem + ?Sized> System<'a, P> {
             sparse: SparseSystem::default(),
             factored: false,
             fallback: false,
+            pinning: false,
+            pinned: Vec::new(),
         })
     }
 

@@ -82,6 +82,14 @@ impl<P: Problem + ?Sized> System<'_, P> {
     /// Solves J δ = −r with the current factorisation (condensed path) or
     /// the sparse reference.
     pub(crate) fn solve(&mut self, r: &Residual, out: &mut State) -> Result<()> {
+        self.solve_unpinned(r, out)?;
+        self.project_pinned(out);
+        Ok(())
+    }
+
+    /// [`solve`](Self::solve) keeping the components along the pinned
+    /// modes.
+    pub(crate) fn solve_unpinned(&mut self, r: &Residual, out: &mut State) -> Result<()> {
         debug_assert!(self.factored);
         if self.active() == LinearSolver::SparseLu {
             return self.solve_sparse(r, out);
