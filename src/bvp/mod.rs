@@ -55,7 +55,7 @@
 //! on a Jacobian with a few singular values 10⁴ and more below the rest (a
 //! loop sliding along a rod under tension), those modes are found from
 //! random solves and every later solve drops its components along them.
-//! Continuation with a tolerance uses it (see `Continuation::tolerance`);
+//! Continuation with a tolerance uses it on request (`Continuation::pin_slides`);
 //! a plain [`Collocation`] solve never pins: its solution solves the
 //! equations, not a problem unfolded along the modes.
 

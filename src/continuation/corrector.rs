@@ -26,7 +26,7 @@ use crate::linalg::Det;
 pub(super) const STUCK_FLOOR: f64 = 100.0;
 
 /// With a tolerance, the most a corrected point pinned along near-null
-/// modes ([`crate::bvp::newton_pinning`]) may lie across the branch from
+/// modes ([`crate::bvp::newton_pinned`]) may lie across the branch from
 /// the equilibrium its modes would slide to, to first order, as a fraction
 /// of the tolerance; a farther point is rejected
 /// ([`Error::SlideNotNegligible`]) and the step shortened. The distances

@@ -322,7 +322,7 @@ impl Continuation {
     /// Where the modes stop being null (a sliding loop reaching an end or
     /// another loop, as at a pop-out), the pinned run can fail where the
     /// unpinned one goes on: measured on the rod in docs/ACCURACY.md
-    /// ("Sliding loops"), faster and within its tolerance on springs whose
+    /// ("Sliding loops, pinned"), faster and within its tolerance on springs whose
     /// loops slide without popping out, failing on others. Off, nothing of
     /// it runs.
     #[must_use]

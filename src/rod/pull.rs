@@ -387,7 +387,7 @@ impl Pull {
     /// unpinned pull crawls or fails there; pinned, the paper's spring with
     /// ν = −0.5 reaches F/((2πn)²B) = 14 within 1e-6 in about a second. It
     /// can fail where the loops stop sliding freely (near a pop-out, or at
-    /// higher forces): docs/ACCURACY.md, "Sliding loops".
+    /// higher forces): docs/ACCURACY.md, "Sliding loops, pinned".
     #[must_use]
     pub fn pin_slides(mut self, on: bool) -> Self {
         self.pin_slides = on;

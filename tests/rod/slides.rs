@@ -17,17 +17,18 @@ use hockle::{Stiffness, Target};
 /// apart), so 1e-9 bounds the reference's own error with room.
 const REFERENCE_AGREEMENT: f64 = 1e-9;
 
-fn spring() -> Rod {
+/// The paper's spring (n = 4, θ0 = 89.8°, A/B = 10) at Poisson's ratio `nu`.
+fn spring(nu: f64) -> Rod {
     Rod::new(
         4,
         89.8_f64.to_radians(),
-        Stiffness::nikolai(10.0, -0.5).unwrap(),
+        Stiffness::nikolai(10.0, nu).unwrap(),
     )
     .unwrap()
 }
 
 fn reference(intervals: usize) -> f64 {
-    let run = Pull::new(spring(), Target::Force(10.0))
+    let run = Pull::new(spring(-0.5), Target::Force(10.0))
         .tolerance(1e-6)
         .intervals(intervals)
         .points(6)
@@ -45,7 +46,7 @@ fn extension_at(run: &PullRun, force: f64) -> Vec<f64> {
 #[test]
 fn a_pinned_pull_past_sliding_loops_is_within_its_estimate() {
     let tol = 1e-6;
-    let run = Pull::new(spring(), Target::Force(14.0))
+    let run = Pull::new(spring(-0.5), Target::Force(14.0))
         .tolerance(tol)
         .pin_slides(true)
         .run(())
@@ -71,12 +72,7 @@ fn a_pinned_pull_past_sliding_loops_is_within_its_estimate() {
 #[test]
 fn pinning_is_off_by_default_and_says_nothing() {
     // the paper's spring never pins: its estimate has no pinned part
-    let rod = Rod::new(
-        4,
-        89.8_f64.to_radians(),
-        Stiffness::nikolai(10.0, 0.05).unwrap(),
-    )
-    .unwrap();
+    let rod = spring(0.05);
     let run = Pull::new(rod, Target::Force(1.0))
         .tolerance(1e-3)
         .run(())

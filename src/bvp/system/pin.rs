@@ -26,9 +26,11 @@
 //! iteration found it along them. Tangents and the mesh check's solves are
 //! pinned alike, so a continuation does not follow the slide.
 //!
-//! A system searches for modes only once [`System::enable_pinning`] is
-//! called (by a Newton that failed, [`crate::bvp::newton_pinning`]); until
-//! then nothing here runs and results are those of the unpinned system.
+//! A system searches for modes only once pinning is enabled (by
+//! [`crate::bvp::newton_pinned`] where a Newton failed, or
+//! [`System::enable_pinning`] on a system of the same run); from then on
+//! every factorisation searches again. Until then nothing here runs and
+//! results are those of the unpinned system.
 
 use super::{State, System};
 use crate::bvp::problem::Problem;
@@ -62,8 +64,8 @@ fn project_out(d: &mut State, v: &State, free: &[usize]) {
 }
 
 impl<P: Problem + ?Sized> System<'_, P> {
-    /// From now on a failed Newton searches for near-null modes
-    /// ([`crate::bvp::newton_pinning`]).
+    /// From now on every factorisation searches for near-null modes and
+    /// every solve drops its components along those found.
     pub(crate) fn enable_pinning(&mut self) {
         self.pinning = true;
     }
