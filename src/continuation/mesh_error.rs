@@ -53,7 +53,8 @@ pub struct ErrorEstimate {
     /// The largest distance across the branch, to first order, between a
     /// point pinned along near-null modes and the equilibrium the modes
     /// would slide to (0 where nothing was pinned; see
-    /// [`Continuation::tolerance`](super::Continuation::tolerance)).
+    /// [`Continuation::pin_slides`](super::Continuation::pin_slides)).
+    #[cfg_attr(feature = "serde", serde(default))]
     pub pinned: f64,
     /// Points checked against the halved mesh.
     pub checks: u32,
