@@ -262,7 +262,8 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
     /// iterate tries again pinned ([`newton_pinned`]), after which the run
     /// pins wherever Newton stalls.
     fn corrector_newton(&mut self, x: &mut State, reuse: bool) -> Result<NewtonStats> {
-        let predicted = x.clone();
+        // the prediction, kept only where a pinned Newton may retry unpinned
+        let predicted = (self.cont.pin_slides && self.sys.is_pinning()).then(|| x.clone());
         let failure = match newton(&mut self.sys, x, self.opts, reuse) {
             Ok(stats) => return Ok(stats),
             Err(e) => e,
@@ -277,7 +278,7 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
             return Err(failure);
         }
         let mut failure = failure;
-        if self.sys.is_pinning() {
+        if let Some(predicted) = predicted {
             self.sys.disable_pinning();
             x.clone_from(&predicted);
             match newton(&mut self.sys, x, self.opts, false) {
