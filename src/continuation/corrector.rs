@@ -42,7 +42,7 @@ pub(super) const PINNED_ACROSS: f64 = 0.25;
 
 /// Whether a Newton failure is a stall (damping could not reduce the
 /// correction, or the iterations ran out), not a failed evaluation.
-fn stalled(e: &Error) -> bool {
+pub(super) fn stalled(e: &Error) -> bool {
     matches!(
         e,
         Error::NewtonDiverged { .. } | Error::NewtonNotConverged { .. }

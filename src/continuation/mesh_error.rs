@@ -19,7 +19,9 @@
 //! on from there).
 
 use super::Steps;
-use super::corrector::{STUCK_FLOOR, border_rhs_solution, refine_border_solution, set_hyperplane};
+use super::corrector::{
+    STUCK_FLOOR, border_rhs_solution, refine_border_solution, set_hyperplane, stalled,
+};
 use super::norm::IntegralNorm;
 use crate::bvp::system::{State, System};
 use crate::bvp::{
@@ -247,9 +249,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
                 ) if correction <= floor => {}
                 // stalled on near-null modes in a run that pins: pinned, as
                 // the corrector's
-                Err(e @ (Error::NewtonDiverged { .. } | Error::NewtonNotConverged { .. }))
-                    if h.sys.is_pinning() =>
-                {
+                Err(e) if stalled(&e) && h.sys.is_pinning() => {
                     if newton_pinned(&mut h.sys, &mut fine, opts).is_none() {
                         return Err(e);
                     }
@@ -341,9 +341,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             Ok(stats) => stats,
             // stalled on near-null modes in a run that pins: pinned, as
             // the corrector's
-            Err(e @ (Error::NewtonDiverged { .. } | Error::NewtonNotConverged { .. }))
-                if sys.is_pinning() =>
-            {
+            Err(e) if stalled(&e) && sys.is_pinning() => {
                 newton_pinned(&mut sys, &mut corrected, self.opts).ok_or(e)?
             }
             Err(e) => return Err(e),
