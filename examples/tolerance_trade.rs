@@ -6,6 +6,7 @@
 //! ```text
 //! cargo run --release --example tolerance_trade [-- --out DIR] [--repeat R] [--memory]
 //! cargo run --release --example tolerance_trade -- --one TOL
+//! cargo run --release --example tolerance_trade -- --folds SETTING [--repeat R]
 //! ```
 //!
 //! Per run: user CPU seconds of the run alone (the process's `utime` from
@@ -26,6 +27,10 @@
 //! pull and prints the peak resident memory (`VmHWM` of `/proc/self/status`)
 //! instead. `--one TOL` makes one pull at TOL and prints it (the run to
 //! count instructions of, under `valgrind --tool=cachegrind`; docs/PERFORMANCE.md).
+//! `--folds SETTING` (`TOL`, or `N,M,TOL` for a fixed mesh) makes R pulls
+//! and prints, machine-readably, the median on-CPU seconds (`cpu S`), the
+//! steps, and every fold (`fold KIND F/((2πn)²B) Δz`, 13 digits): the hockle
+//! side of `benches/auto07p/side_by_side.py`, which times AUTO-07p beside it.
 //! Other processes share the machine: the load average
 //! (`/proc/loadavg`) is printed before and after.
 
@@ -174,6 +179,42 @@ fn curve_error(run: &PullRun, reference: &PullRun) -> f64 {
     common::curve_distance(run.curve(), reference.curve())
 }
 
+/// `TOL` or `N,M,TOL`.
+fn parse_setting(text: &str) -> Result<Setting, Box<dyn Error>> {
+    let parts: Vec<&str> = text.split(',').collect();
+    match parts.as_slice() {
+        [tol] => Ok(Setting::Tolerance(tol.parse()?)),
+        [n, m, tol] => Ok(Setting::Fixed {
+            n: n.parse()?,
+            m: m.parse()?,
+            tol: tol.parse()?,
+        }),
+        _ => Err(format!("a setting is TOL or N,M,TOL, not {text}").into()),
+    }
+}
+
+/// `--folds`: the median on-CPU time of `repeat` pulls, their steps and the
+/// last pull's folds, one per line.
+fn print_folds(setting: Setting, rod: Rod, repeat: usize) -> Result<(), Box<dyn Error>> {
+    let (run, [_, cpu, _]) = timed(setting, rod, repeat)?;
+    if !run.reached_target() {
+        return Err(format!("{} did not reach the target:\n{run}", setting.label()).into());
+    }
+    println!("setting {}", setting.label());
+    println!("cpu {cpu:.4}");
+    println!("steps {}", run.steps());
+    let scale = run.curve().scale();
+    for fold in run.folds() {
+        println!(
+            "fold {:?} {:.13} {:.13}",
+            fold.kind,
+            fold.point.force_scaled(scale),
+            fold.point.extension
+        );
+    }
+    Ok(())
+}
+
 /// One measured row.
 struct Row {
     setting: Setting,
@@ -204,6 +245,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let mut repeat = 3;
     let mut memory = false;
     let mut one = None;
+    let mut folds = None;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {
@@ -211,6 +253,11 @@ fn main() -> Result<(), Box<dyn Error>> {
             "--repeat" => repeat = args.next().ok_or("--repeat needs R")?.parse()?,
             "--memory" => memory = true,
             "--one" => one = Some(args.next().ok_or("--one needs TOL")?.parse::<f64>()?),
+            "--folds" => {
+                folds = Some(parse_setting(
+                    &args.next().ok_or("--folds needs TOL or N,M,TOL")?,
+                )?)
+            }
             other => return Err(format!("unknown argument {other}").into()),
         }
     }
@@ -218,6 +265,9 @@ fn main() -> Result<(), Box<dyn Error>> {
         return Err("--repeat needs R ≥ 1".into());
     }
     let rod = paper_rod()?;
+    if let Some(setting) = folds {
+        return print_folds(setting, rod, repeat);
+    }
     if let Some(tol) = one {
         let run = Pull::new(rod, Target::Force(3.0)).tolerance(tol).run(())?;
         println!("{run}");
