@@ -1,5 +1,8 @@
 """SciPy side of the bvp benches: scipy.integrate.solve_bvp on Bratu (lambda = 1,
-lower branch) and Troesch (mu = 5), timing and accuracy.
+lower branch) and Troesch (mu = 5), timing and accuracy; and Troesch at mu = 10
+with SciPy's own adaptive mesh from its mu = 5 solution, against
+`cargo run --release --example troesch` (hockle's Collocation::tolerance):
+the error at the 20 points of tests/data/troesch_mu10.csv, max |dy|, |dy'|.
 
 Run: pip install scipy && python3 benches/scipy_bvp.py
 Compare with: cargo bench --bench bvp -- scipy_match
@@ -62,3 +65,37 @@ for tol in (1e-6, 1e-8):
     print(f"scipy bratu  tol={tol:.0e}: {t*1e3:8.3f} ms  max mesh error {e:.2e}  intervals {n}  status {st}")
     t, e, n, st = troesch(tol)
     print(f"scipy troesch tol={tol:.0e}: {t*1e3:8.3f} ms  |y'(0) error| {e:.2e}  intervals {n}  status {st}")
+
+
+def troesch10(tol, jacobian):
+    """mu = 10 from SciPy's mu = 5 solution (not timed): best of 10."""
+    import os
+    here = os.path.dirname(os.path.abspath(__file__))
+    table = np.loadtxt(os.path.join(here, "..", "tests", "data", "troesch_mu10.csv"), delimiter=",", skiprows=1)
+    rhs = lambda mu: (lambda s, y: np.vstack([y[1], mu * np.sinh(mu * y[0])]))
+
+    def jac(s, y):
+        j = np.zeros((2, 2, y.shape[1]))
+        j[0, 1] = 1.0
+        j[1, 0] = 100.0 * np.cosh(10.0 * y[0])
+        return j
+
+    bc = lambda a, b: np.array([a[0], b[0] - 1])
+    x = np.linspace(0, 1, 5)
+    start = solve_bvp(rhs(5.0), bc, x, np.vstack([x, np.ones_like(x)]), tol=1e-6, max_nodes=100000)
+    best = float("inf")
+    for _ in range(10):
+        t = time.perf_counter()
+        sol = solve_bvp(rhs(10.0), bc, start.x, start.y, fun_jac=jac if jacobian else None,
+                        tol=tol, max_nodes=1000000)
+        best = min(best, time.perf_counter() - t)
+    v = sol.sol(table[:, 0])
+    err = max(np.max(np.abs(v[0] - table[:, 1])), np.max(np.abs(v[1] - table[:, 2])))
+    return best, err, sol.x.size - 1, sol.status
+
+
+print("troesch mu = 10, adaptive (scipy tol, time, error at the table's points, intervals):")
+for tol in (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9):
+    for jacobian in (False, True):
+        t, e, n, st = troesch10(tol, jacobian)
+        print(f"scipy troesch10 tol={tol:.0e} jac={jacobian}: {t*1e3:8.2f} ms  error {e:.1e}  intervals {n}  status {st}")

@@ -123,9 +123,11 @@ impl Collocation {
         self
     }
 
-    /// Adapt the mesh until the error estimate (see
-    /// [`Solution::error_estimate`]) is below `tol · (1 + max|y|)`, using
-    /// the coarsest equidistributed mesh the estimate allows.
+    /// Adapt the mesh until the error is below `tol · (1 + max|y|)` (max
+    /// over components and mesh values): the coarsest equidistributed mesh
+    /// the local estimate allows, verified on its halved mesh (the returned
+    /// [`Solution::error_estimate`] is twice the largest difference of the
+    /// two, and meets the tolerance) and refined until it does.
     #[must_use]
     pub fn tolerance(mut self, tol: f64) -> Self {
         self.tolerance = Some(tol);

@@ -91,6 +91,24 @@ impl Mesh {
         Ok(Mesh { points })
     }
 
+    /// Every interval split at its midpoint: 2N intervals, the mesh on
+    /// which a solution's error is measured by comparison (the rod's
+    /// halved-mesh check, `Collocation::tolerance`'s verification).
+    ///
+    /// # Errors
+    /// [`Error::InvalidCount`] if 2N exceeds [`Mesh::MAX_INTERVALS`],
+    /// [`Error::InvalidArgument`] if an interval is too narrow to split in
+    /// floating point.
+    pub fn halved(&self) -> Result<Mesh> {
+        let mut points = Vec::with_capacity(2 * self.points.len() - 1);
+        for w in self.points.windows(2) {
+            points.push(w[0]);
+            points.push(0.5 * (w[0] + w[1]));
+        }
+        points.push(self.points[self.points.len() - 1]);
+        Mesh::from_points(points)
+    }
+
     /// The number of intervals N.
     #[must_use]
     pub fn intervals(&self) -> usize {

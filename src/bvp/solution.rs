@@ -186,7 +186,12 @@ impl Solution {
     /// Estimate of the max-norm error between mesh points,
     /// max_j C_m h_j^(m+1) ‖y^(m+1)‖ on interval j, with y^(m+1) from
     /// differences of the piecewise-constant u^(m) (AUTO's estimate).
-    /// It is `NaN` for a one-interval mesh.
+    /// It is `NaN` for a one-interval mesh. A solution of
+    /// [`Collocation::tolerance`](super::Collocation::tolerance) carries
+    /// instead twice the largest difference from its solution on the halved
+    /// mesh, over components (a bound whenever halving at least halves the
+    /// error; the local estimate can fall far short where the mesh does not
+    /// yet resolve the solution).
     #[must_use]
     pub fn error_estimate(&self) -> f64 {
         self.error_estimate

@@ -158,14 +158,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
     /// A failure of the halved mesh's corrector.
     pub(super) fn mesh_error(&mut self, x: &State, t: &State, fold: bool) -> Result<f64> {
         if self.halved.is_none() {
-            let pts = self.mesh.points();
-            let mut half = Vec::with_capacity(2 * pts.len());
-            for w in pts.windows(2) {
-                half.push(w[0]);
-                half.push(0.5 * (w[0] + w[1]));
-            }
-            half.push(1.0);
-            let mesh = Mesh::from_points(half)?;
+            let mesh = self.mesh.halved()?;
             let mut sys = System::new(
                 self.sys.problem(),
                 mesh.points().to_vec(),

@@ -156,7 +156,9 @@ impl Spring {
         };
         let mut answer = (coarse.clone(), f64::INFINITY);
         for _ in 0..MAX_HALVINGS {
-            let fine = match halved(coarse.mesh())
+            let fine = match coarse
+                .mesh()
+                .halved()
                 .and_then(|mesh| solver(mesh).solve(&rod, &coarse, coarse.parameters()))
             {
                 Ok(fine) => fine,
@@ -218,18 +220,6 @@ impl Spring {
             SetAside::NoBound
         }
     }
-}
-
-/// The mesh with every interval halved.
-fn halved(mesh: &Mesh) -> Result<Mesh> {
-    let p = mesh.points();
-    let mut points = Vec::with_capacity(2 * p.len());
-    for w in p.windows(2) {
-        points.push(w[0]);
-        points.push(0.5 * (w[0] + w[1]));
-    }
-    points.push(p[p.len() - 1]);
-    Mesh::from_points(points)
 }
 
 /// The largest distance between the centrelines of two solutions,

@@ -1,0 +1,86 @@
+//! Troesch's problem at μ = 10 (y″ = μ sinh(μ y), y(0) = 0, y(1) = 1: a
+//! layer at s = 1 where y′ = 148) solved by `Collocation::tolerance` from
+//! the μ = 5 solution on 40 uniform intervals, at tol = 1e-2 … 1e-9: the
+//! hockle side of `benches/scipy_bvp.py`'s adaptive comparison (issue 11).
+//!
+//! ```text
+//! cargo run --release --example troesch [-- --points M] [--repeat R]
+//! ```
+//!
+//! Per tolerance: the best wall time of R solves (default 20), the mesh,
+//! the true error (largest |Δy|, |Δy′| at the 20 points of the closed form
+//! in `tests/data/troesch_mu10.csv`, mpmath), the solution's estimate and
+//! what the tolerance allows, tol·(1 + max|y|).
+
+use std::error::Error;
+use std::time::Instant;
+
+use hockle::bvp::Collocation;
+use hockle::bvp::classic::Troesch;
+
+fn table() -> Result<Vec<[f64; 3]>, Box<dyn Error>> {
+    include_str!("../tests/data/troesch_mu10.csv")
+        .lines()
+        .skip(1)
+        .map(|l| {
+            let v = l
+                .split(',')
+                .map(str::parse::<f64>)
+                .collect::<Result<Vec<_>, _>>()?;
+            match v.as_slice() {
+                [s, y, dy] => Ok([*s, *y, *dy]),
+                _ => Err(format!("bad row {l}").into()),
+            }
+        })
+        .collect()
+}
+
+fn main() -> Result<(), Box<dyn Error>> {
+    let (mut points, mut repeat) = (4, 20);
+    let mut args = std::env::args().skip(1);
+    while let Some(a) = args.next() {
+        match a.as_str() {
+            "--points" => points = args.next().ok_or("--points needs M")?.parse()?,
+            "--repeat" => repeat = args.next().ok_or("--repeat needs R")?.parse()?,
+            other => return Err(format!("unknown argument {other}").into()),
+        }
+    }
+    if repeat == 0 {
+        return Err("--repeat needs R ≥ 1".into());
+    }
+    let table = table()?;
+    let size = 1.0 + table.last().ok_or("empty table")?[2];
+    let start = Collocation::new()
+        .intervals(40)
+        .solve(&Troesch, |s: f64| [s, 1.0], &[5.0])?;
+    println!("| tol | time | intervals | true error | estimate | allowed |");
+    println!("|---|---|---|---|---|---|");
+    for tol in [1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9] {
+        let solver = Collocation::new().points(points).tolerance(tol);
+        let mut best = f64::INFINITY;
+        let mut last = None;
+        for _ in 0..repeat {
+            let clock = Instant::now();
+            let sol = solver.solve(&Troesch, &start, &[10.0])?;
+            best = best.min(clock.elapsed().as_secs_f64());
+            last = Some(sol);
+        }
+        let sol = last.ok_or("no solve")?;
+        let error = table
+            .iter()
+            .map(|&[s, y, dy]| {
+                let v = sol.eval(s);
+                (v[0] - y).abs().max((v[1] - dy).abs())
+            })
+            .fold(0.0, f64::max);
+        println!(
+            "| {tol:.0e} | {:.2} ms | {} (m = {}) | {error:.1e} | {:.1e} | {:.1e} |",
+            best * 1e3,
+            sol.mesh().intervals(),
+            sol.points_per_interval(),
+            sol.error_estimate(),
+            tol * size
+        );
+    }
+    Ok(())
+}
