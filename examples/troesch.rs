@@ -18,22 +18,8 @@ use std::time::Instant;
 use hockle::bvp::Collocation;
 use hockle::bvp::classic::Troesch;
 
-fn table() -> Result<Vec<[f64; 3]>, Box<dyn Error>> {
-    include_str!("../tests/data/troesch_mu10.csv")
-        .lines()
-        .skip(1)
-        .map(|l| {
-            let v = l
-                .split(',')
-                .map(str::parse::<f64>)
-                .collect::<Result<Vec<_>, _>>()?;
-            match v.as_slice() {
-                [s, y, dy] => Ok([*s, *y, *dy]),
-                _ => Err(format!("bad row {l}").into()),
-            }
-        })
-        .collect()
-}
+#[path = "../tests/common/mod.rs"]
+mod common;
 
 fn main() -> Result<(), Box<dyn Error>> {
     let (mut points, mut repeat) = (4, 20);
@@ -48,7 +34,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     if repeat == 0 {
         return Err("--repeat needs R ≥ 1".into());
     }
-    let table = table()?;
+    let table = common::troesch_mu10();
     let size = 1.0 + table.last().ok_or("empty table")?[2];
     let start = Collocation::new()
         .intervals(40)
@@ -66,13 +52,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             last = Some(sol);
         }
         let sol = last.ok_or("no solve")?;
-        let error = table
-            .iter()
-            .map(|&[s, y, dy]| {
-                let v = sol.eval(s);
-                (v[0] - y).abs().max((v[1] - dy).abs())
-            })
-            .fold(0.0, f64::max);
+        let error = common::troesch_mu10_error(&sol, &table);
         println!(
             "| {tol:.0e} | {:.2} ms | {} (m = {}) | {error:.1e} | {:.1e} | {:.1e} |",
             best * 1e3,

@@ -138,3 +138,29 @@ pub fn uniform(mut seed: u64) -> impl FnMut() -> f64 {
         (seed % 1_000_000) as f64 / 1e6
     }
 }
+
+/// The closed form of Troesch's problem at μ = 10 at 20 points, denser in
+/// the layer at s = 1: (s, y, y′) from tests/data/troesch_mu10.py (mpmath,
+/// 40 digits, printed to 20).
+pub fn troesch_mu10() -> Vec<[f64; 3]> {
+    include_str!("../data/troesch_mu10.csv")
+        .lines()
+        .skip(1)
+        .map(|l| {
+            let v: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
+            [v[0], v[1], v[2]]
+        })
+        .collect()
+}
+
+/// The largest |Δy|, |Δy′| of a Troesch solution at the points of
+/// [`troesch_mu10`].
+pub fn troesch_mu10_error(sol: &hockle::bvp::Solution, table: &[[f64; 3]]) -> f64 {
+    table
+        .iter()
+        .map(|&[s, y, dy]| {
+            let v = sol.eval(s);
+            (v[0] - y).abs().max((v[1] - dy).abs())
+        })
+        .fold(0.0, f64::max)
+}

@@ -8,6 +8,7 @@ use hockle::bvp::Collocation;
 use hockle::continuation::{Continuation, Output, Termination};
 
 use super::BRATU_FOLD;
+use super::common::{troesch_mu10, troesch_mu10_error};
 use super::problems::{Bratu, Troesch};
 
 /// y′(0) at Bratu's fold: exactly 4 (closed form: y′(0) = θ tanh(θ/4) with
@@ -85,20 +86,6 @@ fn bratu_fold_to_the_tolerance_in_the_end_slope_plane() {
     }
 }
 
-/// The closed form of Troesch's problem at μ = 10 at 20 points, denser in
-/// the layer at s = 1: (s, y, y′) from tests/data/troesch_mu10.py (mpmath,
-/// 40 digits, printed to 20).
-fn troesch_mu10() -> Vec<[f64; 3]> {
-    include_str!("../data/troesch_mu10.csv")
-        .lines()
-        .skip(1)
-        .map(|l| {
-            let v: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
-            [v[0], v[1], v[2]]
-        })
-        .collect()
-}
-
 #[test]
 fn troesch_mu10_meets_the_collocation_tolerance() {
     let table = troesch_mu10();
@@ -117,13 +104,7 @@ fn troesch_mu10_meets_the_collocation_tolerance() {
             .tolerance(tol)
             .solve(&Troesch, &sol5, &[10.0])
             .unwrap();
-        let error = table
-            .iter()
-            .map(|&[s, y, dy]| {
-                let v = sol.eval(s);
-                (v[0] - y).abs().max((v[1] - dy).abs())
-            })
-            .fold(0.0, f64::max);
+        let error = troesch_mu10_error(&sol, &table);
         eprintln!(
             "troesch mu = 10, tol {tol:.0e}: {} intervals, error at the table's points {error:.2e}, estimate {:.2e}, allowed {:.2e}",
             sol.mesh().intervals(),
