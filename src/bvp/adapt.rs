@@ -144,7 +144,7 @@ const MAX_ROUNDS: usize = 16;
 /// Points per interval of the coarser solution at which a verification
 /// compares it with the halved mesh's: k/6, k = 0..5 (and s = 1), so that
 /// an interior bulge of a degree-7 polynomial is seen.
-pub(crate) const VERIFY_SAMPLES: usize = 6;
+const VERIFY_SAMPLES: usize = 6;
 
 /// max over components and mesh values of |y|.
 fn max_abs(sol: &Solution) -> f64 {

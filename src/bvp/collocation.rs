@@ -135,7 +135,9 @@ impl Collocation {
     }
 
     /// The interval limit of the adaptive mesh, at most
-    /// [`Mesh::MAX_INTERVALS`] (checked by `solve`).
+    /// [`Mesh::MAX_INTERVALS`] (checked by `solve`). The halved mesh that
+    /// verifies a tolerance counts: a mesh of more than half the limit
+    /// cannot be verified, and `solve` says `ToleranceNotMet`.
     #[must_use]
     pub fn max_intervals(mut self, n: usize) -> Self {
         self.max_intervals = n;
