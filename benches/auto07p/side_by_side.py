@@ -31,7 +31,8 @@ Jacobian would not change the comparison); hockle's side is `examples/tolerance_
 The reference is hockle on a fixed fine mesh (64 intervals, m = 7,
 tolerance 1e-10), computed by `race`; AUTO at NTST = 160, NCOL = 7,
 EPSL = EPSU = 1e-11 agrees with it on the four folds it reaches before its
-Newton stalls at that tolerance to 2e-11 (docs/PERFORMANCE.md).
+Newton stalls at that tolerance to 1e-10, the last digit AUTO writes
+(docs/PERFORMANCE.md).
 """
 
 import csv
