@@ -100,6 +100,7 @@ impl Mesh {
     /// [`Error::InvalidArgument`] if an interval is too narrow to split in
     /// floating point.
     pub fn halved(&self) -> Result<Mesh> {
+        check_intervals(2 * self.intervals())?;
         let mut points = Vec::with_capacity(2 * self.points.len() - 1);
         for w in self.points.windows(2) {
             points.push(w[0]);
@@ -155,5 +156,27 @@ impl fmt::Display for Mesh {
             "mesh of {} intervals, h ∈ [{lo:.3e}, {hi:.3e}]",
             self.intervals()
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn halved_splits_every_interval_at_its_midpoint() {
+        let mesh = Mesh::from_points(vec![0.0, 0.25, 0.5, 1.0]).unwrap();
+        let half = mesh.halved().unwrap();
+        // midpoints of dyadic intervals are exact in binary
+        assert_eq!(
+            half.points(),
+            &[0.0, 0.125, 0.25, 0.375, 0.5, 0.75, 1.0][..]
+        );
+    }
+
+    #[test]
+    fn halving_past_the_interval_limit_is_refused_before_allocating() {
+        let mesh = Mesh::uniform(Mesh::MAX_INTERVALS / 2 + 1).unwrap();
+        assert!(matches!(mesh.halved(), Err(Error::InvalidCount { .. })));
     }
 }
