@@ -32,11 +32,16 @@ impl Collocation {
     ) -> Result<Solution> {
         let mut candidate = self.locally_adapted(problem, sol, tol, tab)?;
         let m1 = (tab.m + 1) as f64;
+        // the last verification that fell short: (2d, intervals), the
+        // estimate a failure reports (the local one is known to fall short)
+        let mut short = None;
         for _round in 0..MAX_ROUNDS {
-            let mesh = candidate.mesh.halved()?;
-            if mesh.intervals() > self.max_intervals {
+            // checked here, not by `halved`, so that the limit says
+            // `ToleranceNotMet` whatever it is
+            if 2 * candidate.mesh.intervals() > self.max_intervals {
                 break;
             }
+            let mesh = candidate.mesh.halved()?;
             let fine = self.solve_on(problem, &candidate, &candidate.p, mesh, tab)?;
             let d = differences(&candidate, &fine);
             let worst = 2.0 * d.iter().fold(0.0_f64, |a, v| a.max(*v));
@@ -45,13 +50,14 @@ impl Collocation {
                 candidate.error_estimate = worst;
                 return Ok(candidate);
             }
+            let n = candidate.mesh.intervals();
+            short = Some((worst, n));
             if !worst.is_finite() {
                 break;
             }
             // the local estimate's shape on the finer solution, its size
             // from the difference: on an equidistributed mesh the error
             // falls as N^-(m+1)
-            let n = candidate.mesh.intervals();
             let target =
                 ((n as f64 * (1.2 * worst / atol).powf(1.0 / m1)).ceil() as usize).max(n + 1);
             if target > self.max_intervals {
@@ -64,10 +70,12 @@ impl Collocation {
             )?;
             candidate = self.solve_on(problem, &fine, &fine.p, mesh, tab)?;
         }
+        let (estimate, intervals) =
+            short.unwrap_or((candidate.error_estimate, candidate.mesh.intervals()));
         Err(Error::ToleranceNotMet {
             tolerance: tol,
-            estimate: candidate.error_estimate,
-            intervals: candidate.mesh.intervals() as u64,
+            estimate,
+            intervals: intervals as u64,
         })
     }
 

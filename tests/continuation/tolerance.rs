@@ -121,3 +121,22 @@ fn troesch_mu10_meets_the_collocation_tolerance() {
         );
     }
 }
+
+#[test]
+fn a_limit_that_leaves_no_room_to_verify_is_tolerance_not_met() {
+    // the verification solves on twice the accepted mesh's intervals: with
+    // a limit of 60 the ~59 intervals tol 1e-6 needs cannot be verified,
+    // and the answer is the typed refusal, not an unverified solution
+    let sol5 = Collocation::new()
+        .intervals(40)
+        .solve(&Troesch, |s: f64| [s, 1.0], &[5.0])
+        .unwrap();
+    let r = Collocation::new()
+        .tolerance(1e-6)
+        .max_intervals(60)
+        .solve(&Troesch, &sol5, &[10.0]);
+    assert!(
+        matches!(r, Err(hockle::Error::ToleranceNotMet { .. })),
+        "{r:?}"
+    );
+}
