@@ -268,6 +268,26 @@ pub enum Error {
         /// The limit ([`crate::continuation::Continuation::max_angle`]).
         max_angle: f64,
     },
+    /// Accepted continuation steps stopped moving the solution: the
+    /// parameter and both coordinates of the diagram came out within their
+    /// rounding (4 ulp) of the previous point's on successive steps. The step is
+    /// below their rounding (for a rod pull: forces so large that the
+    /// tolerance asked, absolute in F/((2πn)²B), is below the force's last
+    /// digits), and the curve cannot be continued in double precision at
+    /// this tolerance.
+    #[error(
+        "{steps} successive steps of Δs = {ds:e} left the parameter at {parameter:e} and the \
+         diagram's point unchanged: the step is below their rounding (ask for a looser \
+         tolerance or a nearer target)"
+    )]
+    NoProgress {
+        /// The parameter where the run stopped moving.
+        parameter: f64,
+        /// The step size of the last step.
+        ds: f64,
+        /// The successive steps that did not move.
+        steps: u32,
+    },
     // ----- rod, spring ---------------------------------------------------
     /// A pull's target cannot be reached: a non-finite value, a force of 0
     /// or one whose physical value f·(2πn)²B overflows, an extension equal

@@ -66,6 +66,20 @@ pub struct Steps<'a, P: Problem + ?Sized> {
     pub(super) fold_behind: bool,
     /// The accepted-step count at the last mesh check.
     pub(super) checked_at: usize,
+    /// Successive accepted steps that left the parameter and the diagram's
+    /// point unchanged ([`Error::NoProgress`] at [`STALLED_STEPS`]).
+    pub(super) stalled: u32,
+}
+
+/// Successive steps that move nothing before a run ends with
+/// [`Error::NoProgress`]: one could be a coincidence of rounding at a
+/// turning point of both coordinates; three in a row are the rounding floor.
+const STALLED_STEPS: u32 = 3;
+
+/// Whether a and b differ by no more than their last few digits (4 ulp):
+/// a step that moved them less moved nothing a double can show.
+fn rounding_apart(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 4.0 * f64::EPSILON * a.abs().max(b.abs())
 }
 
 impl Continuation {
@@ -199,6 +213,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             min_intervals: mesh_intervals,
             fold_behind: false,
             checked_at: 0,
+            stalled: 0,
         };
         let mut y_ref = std::mem::take(&mut steps.sys.y_ref);
         steps.sys.collocation_values(&steps.x0, &mut y_ref);
@@ -469,6 +484,22 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         );
         if let Some(f) = &fit {
             p.diagram_curvature = f.end.curvature;
+        }
+        if rounding_apart(c.x.p[q], self.x0.p[q]) && {
+            let before = self.diagram_of(&self.x0, &self.t0).0;
+            rounding_apart(p.diagram[0], before[0]) && rounding_apart(p.diagram[1], before[1])
+        } {
+            self.stalled += 1;
+            if self.stalled >= STALLED_STEPS {
+                self.fail(Error::NoProgress {
+                    parameter: c.x.p[q],
+                    ds,
+                    steps: self.stalled,
+                });
+                return;
+            }
+        } else {
+            self.stalled = 0;
         }
         self.pending.push_back(p);
         // Accept: the new point becomes x₀; its factorisation is current

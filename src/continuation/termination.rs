@@ -34,16 +34,20 @@ pub enum Termination {
     Event(usize),
     /// An observer hook returned `ControlFlow::Break`.
     Stopped,
-    /// A step could not be taken even at the minimum step size.
+    /// The run could not go on: a step failed even at the minimum step
+    /// size, or the steps stopped moving the point, or (a rod pull) the
+    /// point reached is no rod.
     Failed {
         /// The step size |Δs| of the last attempt.
         ds: f64,
-        /// Why the last attempt failed: [`Error::NewtonNotConverged`] or
+        /// Why: at the minimum step, [`Error::NewtonNotConverged`] or
         /// [`Error::NewtonDiverged`] (the corrector),
         /// [`Error::SingularJacobian`], [`Error::NonFinite`] (the problem
         /// returned NaN or ∞), or [`Error::StepAngleTooLarge`] (the tangent
-        /// kept turning by more than the maximum angle); for a rod pull
-        /// also [`Error::NotARod`] (a point with |Δz| > 1).
+        /// kept turning by more than the maximum angle); at any step,
+        /// [`Error::NoProgress`] (steps below the rounding of the parameter
+        /// and the diagram) and, for a rod pull, [`Error::NotARod`] (a point
+        /// with |Δz| > 1).
         error: Error,
     },
 }
@@ -67,7 +71,7 @@ impl fmt::Display for Termination {
             Termination::Event(i) => write!(f, "user event {i} crossed zero"),
             Termination::Stopped => f.write_str("stopped by the observer"),
             Termination::Failed { ds, error } => {
-                write!(f, "failed at the minimum step {ds:e}: {error}")
+                write!(f, "failed (last step Δs = {ds:e}): {error}")
             }
         }
     }

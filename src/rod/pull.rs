@@ -234,7 +234,8 @@ pub struct Pull {
     points: Option<usize>,
     first_step: Option<f64>,
     ds_min: f64,
-    ds_max: f64,
+    /// `None`: [`Pull::largest_step`]'s default.
+    ds_max: Option<f64>,
     max_steps: usize,
     max_angle: f64,
     locate_folds: bool,
@@ -249,6 +250,10 @@ const START_LOAD: f64 = 1e-4;
 /// cannot be solved: a step in the continuation norm that the step control
 /// doubles in a few accepted steps where it is too small.
 const FALLBACK_STEP: f64 = 1e-3;
+
+/// Under force control the largest step is at least the target over this
+/// ([`Pull::largest_step`]).
+const LARGEST_STEPS_TO_TARGET: f64 = 100.0;
 
 /// `rod` solved at `parameters` from `guess`, or `None` where Newton
 /// fails or the system is singular there (the start's re-solves, which
@@ -287,7 +292,7 @@ impl Pull {
     /// | [`tolerance`](Self::tolerance) | 1e-6 in (Δz, F/((2πn)²B)), 1e-12 ≤ tol ≤ 1e-1 |
     /// | [`points`](Self::points) | from the tolerance: m = 4 (tol ≥ 1e-4), 5 (≥ 1e-7), 6 (≥ 1e-9), 7 |
     /// | [`intervals`](Self::intervals) | adaptive, from 3n equidistributed intervals (n coils) |
-    /// | [`step`](Self::step) | first Δs: the distance to a load 1e-4 away (module docs); within [1e-7, 1] |
+    /// | [`step`](Self::step) | first Δs: the distance to a load 1e-4 away (module docs); within [1e-7, [`largest_step`](Self::largest_step)] (1, or under force control a hundredth of the target where larger) |
     /// | [`max_steps`](Self::max_steps) | 20 000 |
     /// | [`max_angle`](Self::max_angle) | 0.4 rad between successive tangents |
     /// | [`locate_folds`](Self::locate_folds) | yes |
@@ -306,7 +311,7 @@ impl Pull {
             points: None,
             first_step: None,
             ds_min: 1e-7,
-            ds_max: 1.0,
+            ds_max: None,
             max_steps: 20_000,
             max_angle: 0.4,
             locate_folds: true,
@@ -354,8 +359,22 @@ impl Pull {
     pub fn step(mut self, ds: f64, ds_min: f64, ds_max: f64) -> Self {
         self.first_step = Some(ds);
         self.ds_min = ds_min;
-        self.ds_max = ds_max;
+        self.ds_max = Some(ds_max);
         self
+    }
+
+    /// The largest step Δs: the one set by [`step`](Self::step), else 1
+    /// (in F/((2πn)²B), the continuation norm's force unit), or under force
+    /// control a hundredth of the target force where that is larger, so
+    /// that a pull to a large force is not a walk of unit steps (the
+    /// tolerance sets the steps below the cap: the paper's spring reaches
+    /// F/((2πn)²B) = 3·10⁵ in about 170 steps at tolerance 1e-4).
+    #[must_use]
+    pub fn largest_step(&self) -> f64 {
+        self.ds_max.unwrap_or(match self.target {
+            Target::Force(f) => (f.abs() / LARGEST_STEPS_TO_TARGET).max(1.0),
+            Target::Extension(_) => 1.0,
+        })
     }
 
     /// Maximum number of accepted steps.
@@ -500,8 +519,8 @@ impl Pull {
         let ds = self.first_step.unwrap_or(self.ds_min);
         if !(self.ds_min > 0.0
             && self.ds_min <= ds.abs()
-            && ds.abs() <= self.ds_max
-            && self.ds_max.is_finite())
+            && ds.abs() <= self.largest_step()
+            && self.largest_step().is_finite())
         {
             return Err(Error::InvalidArgument {
                 name: "step",
@@ -598,7 +617,7 @@ impl Pull {
             .solver(solver.clone())
             .weights(&rod.norm_weights())
             .parameter_weight(theta)
-            .step_bounds(self.ds_min, self.ds_max)
+            .step_bounds(self.ds_min, self.largest_step())
             .max_steps(self.max_steps)
             .max_angle(self.max_angle)
             .tolerance(self.tolerance)
@@ -627,7 +646,7 @@ impl Pull {
                     Some(near) => cont.distance(&rest, &near)?,
                     None => FALLBACK_STEP,
                 }
-                .clamp(self.ds_min, self.ds_max)
+                .clamp(self.ds_min, self.largest_step())
             }
         };
         Ok(Start {

@@ -33,6 +33,7 @@ mod elastica;
 mod found;
 mod found_audit15;
 mod found_extremes;
+mod found_large_forces;
 mod helix;
 mod hostile;
 mod phase_diagram;
