@@ -4,6 +4,11 @@
 Run from the repository root:  python3 tests/data/gen_special.py
 Deterministic (fixed seed); rewrites tests/data/special_*.tsv.
 
+`--seed S --out DIR/` writes the same kinds of tables from other random
+points (the grids stay) into DIR, to check the code on points it was not
+tuned on: copy them over tests/data/ and run `cargo test --release --test
+special -- --nocapture` (docs/ACCURACY.md, "Fresh points").
+
 Every input is a double written with repr() (it parses back exactly); the
 modulus is given either as m ("m" rows) or as m1 = 1 - m ("c" rows), exactly
 as the test builds it (Modulus::from_m / Modulus::from_complement), and the
@@ -229,5 +234,19 @@ def main():
     )
 
 
+def options(argv):
+    """--seed S and --out DIR/ (module docs); sets SEED and OUT."""
+    global SEED, OUT
+    args = iter(argv)
+    for a in args:
+        if a == "--seed":
+            SEED = int(next(args))
+        elif a == "--out":
+            OUT = next(args).rstrip("/") + "/"
+        else:
+            sys.exit(f"unknown argument {a} (--seed S, --out DIR)")
+
+
 if __name__ == "__main__":
+    options(sys.argv[1:])
     main()

@@ -3,6 +3,7 @@
 
 Run from the repository root:  python3 tests/data/gen_special_dm.py
 Deterministic (fixed seed); rewrites tests/data/special_dm_*.tsv.
+`--seed S --out DIR/` as in gen_special.py (fresh points into DIR).
 
 Inputs as in gen_special.py: "m" rows give m, "c" rows give m1 = 1 - m, each
 a double written with repr(); references are evaluated at that exact value
@@ -189,5 +190,15 @@ def main():
           jacobi(random.Random(SEED + 2)))
 
 
+def options(argv):
+    """--seed S and --out DIR/, as gen_special.py (whose `write` takes OUT)."""
+    global SEED
+    import gen_special
+    gen_special.options(argv)
+    if "--seed" in argv:
+        SEED = gen_special.SEED
+
+
 if __name__ == "__main__":
+    options(sys.argv[1:])
     main()
