@@ -27,12 +27,23 @@ use std::time::Instant;
 
 use hockle::continuation::Point;
 use hockle::elastica::{Branch, Diamond, OutOfPlane};
+use hockle::rod::Pull;
 use hockle::spring::{Control, Direction, ElasticaModel, RodModel, Spring, Target};
 use hockle::{FoldKind, ForceExtension};
 
 const MAX_FORCE_SCALED: f64 = 3.0;
 
-fn main() -> Result<(), Box<dyn Error>> {
+fn main() -> std::process::ExitCode {
+    match run() {
+        Ok(()) => std::process::ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("unlooping: {e}");
+            std::process::ExitCode::from(2)
+        }
+    }
+}
+
+fn run() -> Result<(), Box<dyn Error>> {
     let mut out = std::env::var_os("CARGO_TARGET_DIR")
         .map_or_else(
             || Path::new(env!("CARGO_MANIFEST_DIR")).join("target"),
@@ -40,22 +51,26 @@ fn main() -> Result<(), Box<dyn Error>> {
         )
         .join("hockle");
     let mut model = RodModel::default();
+    let mut tolerance = Pull::DEFAULT_TOLERANCE;
     let mut contact = true;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {
             "--out" => out = PathBuf::from(args.next().ok_or("--out needs a directory")?),
             "--intervals" => {
-                model = model.intervals(args.next().ok_or("--intervals needs N")?.parse()?)
+                let n = args.next().ok_or("--intervals needs N")?;
+                model = model.intervals(n.parse().map_err(|e| format!("--intervals {n}: {e}"))?)
             }
             "--tolerance" => {
-                model = model.tolerance(args.next().ok_or("--tolerance needs TOL")?.parse()?)
+                let t = args.next().ok_or("--tolerance needs TOL")?;
+                tolerance = t.parse().map_err(|e| format!("--tolerance {t}: {e}"))?;
+                model = model.tolerance(tolerance);
             }
             "--no-contact" => contact = false,
             other => return Err(format!("unknown argument {other}").into()),
         }
     }
-    std::fs::create_dir_all(&out)?;
+    std::fs::create_dir_all(&out).map_err(|e| format!("--out {}: {e}", out.display()))?;
 
     let spring = Spring::paper();
     let scale = spring.force_scale();
@@ -96,6 +111,11 @@ fn main() -> Result<(), Box<dyn Error>> {
     println!("{response} in {elapsed:.2?}");
     if let Some(e) = response.estimated_error() {
         println!("estimated error of the curve and its folds in (Δz, F/((2πn)²B)): {e:.1e}");
+        if !(e <= tolerance) {
+            println!(
+                "  NOT within the tolerance {tolerance:e} (a fixed mesh too coarse, or a run that could not refine)"
+            );
+        }
     }
     let s = spring.scale();
     println!("pop-outs (maximum-force fold → minimum-force fold):");
@@ -199,8 +219,9 @@ fn main() -> Result<(), Box<dyn Error>> {
 
     let csv = out.join("unlooping.csv");
     let svg = out.join("unlooping.svg");
-    write_csv(&response, &csv)?;
-    std::fs::write(&svg, plot(&response, &scaffold, &diamonds))?;
+    write_csv(&response, &csv).map_err(|e| format!("{}: {e}", csv.display()))?;
+    std::fs::write(&svg, plot(&response, &scaffold, &diamonds))
+        .map_err(|e| format!("{}: {e}", svg.display()))?;
     println!("wrote {} and {}", csv.display(), svg.display());
     Ok(())
 }

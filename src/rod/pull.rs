@@ -275,15 +275,15 @@ fn solve_unless_singular(
     }
 }
 
-/// The default tolerance of a pull (the bar: the paper's folds to
-/// 1e-6).
-const DEFAULT_TOLERANCE: f64 = 1e-6;
-
 /// Mesh intervals per coil of the first mesh (the start's check refines or
 /// coarsens it).
 const START_INTERVALS_PER_COIL: usize = 3;
 
 impl Pull {
+    /// The tolerance of a pull that is not given one, in (Δz,
+    /// F/((2πn)²B)): the paper's folds to 1e-6.
+    pub const DEFAULT_TOLERANCE: f64 = 1e-6;
+
     /// A pull of `rod` to `target` (force control for [`Target::Force`],
     /// extension control for [`Target::Extension`]) with the defaults:
     ///
@@ -306,7 +306,7 @@ impl Pull {
         Self {
             rod: rod.with_control(target.control()),
             target,
-            tolerance: DEFAULT_TOLERANCE,
+            tolerance: Self::DEFAULT_TOLERANCE,
             intervals: None,
             points: None,
             first_step: None,
