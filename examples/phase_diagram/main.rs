@@ -335,68 +335,38 @@ fn lines_through(
     let up = trace(&fine, family, c0, NikolaiRod::NU, NU_MAX)?;
     lines.push(both_ways(i, Fixed::AOverB(a_over_b), down, up));
     // The reading grid: from (A_MAX, 0.05) along ν to each ν, then in A/B
-    // down to the tip.
-    let Some(end) = end else {
-        // the pop-out's region ends below A/B = 100 at ν = 0.05 (n = 5: a
-        // band of A/B closed by two tips): the grid starts from c0 instead
-        lines.extend(grid_from(&search, family, i, c0)?);
-        return Ok(lines);
-    };
-    for side in [
-        NU_GRID
-            .iter()
-            .rev()
-            .filter(|v| **v < NU)
-            .copied()
-            .collect::<Vec<_>>(),
-        NU_GRID.iter().filter(|v| **v > NU).copied().collect(),
-    ] {
-        let mut from = Some(end.clone());
-        let mut gone = LineEnd::Tip;
-        for nu in side {
-            let Some(start) = from.take() else {
-                // the region ended in ν at A/B = 100 (empty beyond), or the
-                // line in ν did not reach this ν (unknown beyond)
-                lines.push(beyond(i, nu, gone));
-                continue;
-            };
-            let along_nu = trace(&search, family, &start, NikolaiRod::NU, nu)?;
-            match along_nu.last {
-                Some(s) => {
-                    let mut line = trace(&search, family, &s, NikolaiRod::LN_A_OVER_B, A_MIN.ln())?;
-                    line.points.reverse();
-                    lines.push(CuspLine {
-                        pop_out: i,
-                        fixed: Fixed::Nu(nu),
-                        points: line.points,
-                        ends: [line.end, LineEnd::Range],
-                    });
-                    from = Some(s);
-                }
-                None => {
-                    gone = along_nu.end;
-                    lines.push(beyond(i, nu, gone));
-                }
-            }
-        }
-    }
+    // down to the tip; where the pop-out's region ends below A/B = 100 at
+    // ν = 0.05 (n = 5: an island about the reference, closed by tips in
+    // A/B and in ν), from c0 instead, then in A/B both ways.
+    lines.extend(match end {
+        Some(end) => grid(&search, family, i, &end, Grid::FromAMax)?,
+        None => grid(&search, family, i, c0, Grid::FromCusp)?,
+    });
     Ok(lines)
 }
 
-/// The reading grid of pop-out `i` where its line at ν = 0.05 does not
-/// reach A/B = 100 (n = 5: an island of the pop-out about the reference,
-/// closed by tips in A/B and in ν): from its cusp `c0` along ν (at c0's
-/// A/B) to each ν of the grid, outwards from 0.05, and there in A/B both
-/// ways (down to A_MIN, up to A_MAX, each to its tip or its range). Beyond
-/// a ν the line in ν does not reach, the pop-out does not exist where that
-/// line ended at a tip (read as for the grid from A/B = 100, which infers
-/// the same from one line), and θ0_c is not known where it ended
-/// unfinished (scenes there read `NotMapped`).
-fn grid_from(
+/// Where the reading grid of a pop-out starts ([`grid`]).
+#[derive(Clone, Copy, PartialEq)]
+enum Grid {
+    /// From its cusp at A/B = 100, ν = 0.05: each line in A/B runs down
+    /// to its tip and ends at A/B = 100 by range.
+    FromAMax,
+    /// From its cusp at the reference: each line in A/B runs both ways.
+    FromCusp,
+}
+
+/// The reading grid of pop-out `i`: from `start` along ν to each ν of the
+/// grid, outwards from 0.05, and there the line in A/B (`how`). Beyond a ν
+/// the line in ν does not reach, the pop-out does not exist where that
+/// line ended at a tip (an inference from one line: the region ended in ν
+/// there), and θ0_c is not known where it ended unfinished (scenes there
+/// read `NotMapped`).
+fn grid(
     search: &CuspSearch,
     family: &NikolaiRod,
     i: usize,
-    c0: &Solution,
+    start: &Solution,
+    how: Grid,
 ) -> Result<Vec<CuspLine>, Box<dyn Error + Send + Sync>> {
     let mut lines = Vec::new();
     for side in [
@@ -408,7 +378,7 @@ fn grid_from(
             .collect::<Vec<_>>(),
         NU_GRID.iter().filter(|v| **v > NU).copied().collect(),
     ] {
-        let mut from = Some(c0.clone());
+        let mut from = Some(start.clone());
         let mut gone = LineEnd::Tip;
         for nu in side {
             let Some(start) = from.take() else {
@@ -416,18 +386,29 @@ fn grid_from(
                 continue;
             };
             let along_nu = trace(search, family, &start, NikolaiRod::NU, nu)?;
-            match along_nu.last {
-                Some(s) => {
-                    let down = trace(search, family, &s, NikolaiRod::LN_A_OVER_B, A_MIN.ln())?;
+            let Some(s) = along_nu.last else {
+                gone = along_nu.end;
+                lines.push(beyond(i, nu, gone));
+                continue;
+            };
+            let down = trace(search, family, &s, NikolaiRod::LN_A_OVER_B, A_MIN.ln())?;
+            lines.push(match how {
+                Grid::FromAMax => {
+                    let mut points = down.points;
+                    points.reverse();
+                    CuspLine {
+                        pop_out: i,
+                        fixed: Fixed::Nu(nu),
+                        points,
+                        ends: [down.end, LineEnd::Range],
+                    }
+                }
+                Grid::FromCusp => {
                     let up = trace(search, family, &s, NikolaiRod::LN_A_OVER_B, A_MAX.ln())?;
-                    lines.push(both_ways(i, Fixed::Nu(nu), down, up));
-                    from = Some(s);
+                    both_ways(i, Fixed::Nu(nu), down, up)
                 }
-                None => {
-                    gone = along_nu.end;
-                    lines.push(beyond(i, nu, gone));
-                }
-            }
+            });
+            from = Some(s);
         }
     }
     Ok(lines)
