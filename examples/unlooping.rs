@@ -111,7 +111,7 @@ fn run() -> Result<(), Box<dyn Error>> {
     println!("{response} in {elapsed:.2?}");
     if let Some(e) = response.estimated_error() {
         println!("estimated error of the curve and its folds in (Δz, F/((2πn)²B)): {e:.1e}");
-        if !(e <= tolerance) {
+        if e.is_nan() || e > tolerance {
             println!(
                 "  NOT within the tolerance {tolerance:e} (a fixed mesh too coarse, or a run that could not refine)"
             );

@@ -3,18 +3,13 @@
 //! of the force made them stall until the step limit.
 
 use hockle::Error;
-use hockle::Stiffness;
 use hockle::Target;
 use hockle::continuation::Termination;
 use hockle::rod::{Pull, Rod};
+use hockle::spring::{RodModel, Spring};
 
 fn paper_rod() -> Rod {
-    Rod::new(
-        4,
-        89.8_f64.to_radians(),
-        Stiffness::nikolai(10.0, 0.05).unwrap(),
-    )
-    .unwrap()
+    RodModel::rod(&Spring::paper()).unwrap()
 }
 
 /// A pull to F/((2πn)²B) = 3e5 took steps of at most Δs = 1 (the cap, in
