@@ -57,10 +57,20 @@ fn progress(p: &Point) -> ControlFlow<()> {
     ControlFlow::Continue(())
 }
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
+#[path = "support/exit.rs"]
+mod exit;
+
+fn main() -> std::process::ExitCode {
+    exit::report("bratu", run())
+}
+
+fn run() -> Result<(), Box<dyn std::error::Error>> {
     let out = std::env::args()
         .nth(1)
         .unwrap_or_else(|| "target/hockle/bratu.csv".to_string());
+    if out.starts_with('-') {
+        return Err(format!("unknown option {out}; usage: bratu [OUT.csv]").into());
+    }
     if let Some(dir) = std::path::Path::new(&out).parent() {
         std::fs::create_dir_all(dir)?;
     }

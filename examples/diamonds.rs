@@ -14,7 +14,14 @@ use hockle::Stiffness;
 use hockle::elastica::{Branch, Elastica, OutOfPlane};
 use hockle::special::Modulus;
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
+#[path = "support/exit.rs"]
+mod exit;
+
+fn main() -> std::process::ExitCode {
+    exit::report("diamonds", run())
+}
+
+fn run() -> Result<(), Box<dyn std::error::Error>> {
     let mut nus = Vec::new();
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {

@@ -114,7 +114,14 @@ fn palette(i: usize) -> RGBColor {
     C[i % C.len()]
 }
 
-fn main() -> Result<(), Box<dyn Error>> {
+#[path = "support/exit.rs"]
+mod exit;
+
+fn main() -> std::process::ExitCode {
+    exit::report("elastica_branches", run())
+}
+
+fn run() -> Result<(), Box<dyn Error>> {
     let dir = out_dir();
     std::fs::create_dir_all(&dir)?;
     let trace = Trace::new()

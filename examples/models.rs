@@ -77,7 +77,10 @@ fn timed(model: &dyn Model, spring: &Spring, target: f64) -> (Response, Duration
     (last.expect("at least one run"), start.elapsed() / runs)
 }
 
-fn main() {
+#[path = "support/exit.rs"]
+mod exit;
+
+fn main() -> std::process::ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let result = match args.first().map(String::as_str) {
         None => {
@@ -94,10 +97,7 @@ fn main() {
             .and_then(|scene| trade::ends(scene)),
         Some(_) => scenes(&args),
     };
-    if let Err(e) = result {
-        eprintln!("models: {e}");
-        std::process::exit(2);
-    }
+    exit::report("models", result)
 }
 
 /// One scene of the command line: n, θ0 (degrees), A/B, ν.

@@ -50,7 +50,14 @@ impl Collect {
     }
 }
 
-fn main() -> Result<(), Box<dyn Error>> {
+#[path = "support/exit.rs"]
+mod exit;
+
+fn main() -> std::process::ExitCode {
+    exit::report("shapes", run())
+}
+
+fn run() -> Result<(), Box<dyn Error>> {
     let mut out = std::env::var_os("CARGO_TARGET_DIR")
         .map_or_else(
             || std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"),

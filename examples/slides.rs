@@ -82,7 +82,14 @@ const SCENES: [Scene; 6] = [
     },
 ];
 
-fn main() -> Result<(), Box<dyn Error>> {
+#[path = "support/exit.rs"]
+mod exit;
+
+fn main() -> std::process::ExitCode {
+    exit::report("slides", run())
+}
+
+fn run() -> Result<(), Box<dyn Error>> {
     let pinned_only = std::env::args().any(|a| a == "--pinned-only");
     for s in &SCENES {
         let rod = Rod::new(

@@ -22,7 +22,14 @@ use hockle::continuation::{Point, PointKind};
 use hockle::rod::Equilibrium;
 use hockle::spring::{Control, RodModel, Spring, Target};
 
-fn main() -> Result<(), Box<dyn Error>> {
+#[path = "support/exit.rs"]
+mod exit;
+
+fn main() -> std::process::ExitCode {
+    exit::report("stability", run())
+}
+
+fn run() -> Result<(), Box<dyn Error>> {
     let mut every = 25usize;
     let mut segments = hockle::rod::STABILITY_SEGMENTS;
     let mut spring = Spring::paper();

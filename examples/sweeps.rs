@@ -158,7 +158,14 @@ fn plot(title: &str, curves: &[Curve], path: &Path) -> Result<(), Box<dyn Error>
     Ok(())
 }
 
-fn main() -> Result<(), Box<dyn Error>> {
+#[path = "support/exit.rs"]
+mod exit;
+
+fn main() -> std::process::ExitCode {
+    exit::report("sweeps", run())
+}
+
+fn run() -> Result<(), Box<dyn Error>> {
     let mut out = std::env::var_os("CARGO_TARGET_DIR")
         .map_or_else(
             || std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"),

@@ -235,7 +235,14 @@ struct Row {
     true_curve: f64,
 }
 
-fn main() -> Result<(), Box<dyn Error>> {
+#[path = "support/exit.rs"]
+mod exit;
+
+fn main() -> std::process::ExitCode {
+    exit::report("tolerance_trade", run())
+}
+
+fn run() -> Result<(), Box<dyn Error>> {
     let mut out = std::env::var_os("CARGO_TARGET_DIR")
         .map_or_else(
             || Path::new(env!("CARGO_MANIFEST_DIR")).join("target"),

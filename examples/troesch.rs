@@ -21,7 +21,14 @@ use hockle::bvp::classic::Troesch;
 #[path = "../tests/common/mod.rs"]
 mod common;
 
-fn main() -> Result<(), Box<dyn Error>> {
+#[path = "support/exit.rs"]
+mod exit;
+
+fn main() -> std::process::ExitCode {
+    exit::report("troesch", run())
+}
+
+fn run() -> Result<(), Box<dyn Error>> {
     let (mut points, mut repeat) = (4, 20);
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {

@@ -33,14 +33,11 @@ use hockle::{FoldKind, ForceExtension};
 
 const MAX_FORCE_SCALED: f64 = 3.0;
 
+#[path = "support/exit.rs"]
+mod exit;
+
 fn main() -> std::process::ExitCode {
-    match run() {
-        Ok(()) => std::process::ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("unlooping: {e}");
-            std::process::ExitCode::from(2)
-        }
-    }
+    exit::report("unlooping", run())
 }
 
 fn run() -> Result<(), Box<dyn Error>> {

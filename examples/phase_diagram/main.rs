@@ -630,14 +630,11 @@ fn in_parallel<T: Sync>(
     Ok(lines)
 }
 
+#[path = "../support/exit.rs"]
+mod exit;
+
 fn main() -> std::process::ExitCode {
-    match run() {
-        Ok(()) => std::process::ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("phase_diagram: {e}");
-            std::process::ExitCode::from(2)
-        }
-    }
+    exit::report("phase_diagram", run())
 }
 
 fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
