@@ -368,7 +368,7 @@ impl Pull {
     /// control a hundredth of the target force where that is larger, so
     /// that a pull to a large force is not a walk of unit steps (the
     /// tolerance sets the steps below the cap: the paper's spring reaches
-    /// F/((2πn)²B) = 3·10⁵ in about 170 steps at tolerance 1e-4).
+    /// F/((2πn)²B) = 3·10⁵ in about 300 steps at tolerance 1e-4).
     #[must_use]
     pub fn largest_step(&self) -> f64 {
         self.ds_max.unwrap_or(match self.target {
