@@ -37,6 +37,14 @@ use crate::error::{Error, Result};
 /// 0.999 of the true error there).
 const MESH_SAFETY: f64 = 2.0;
 
+/// How often [`Steps::fold_behind`] doubles its search back from half the
+/// step: to 2⁹ half-steps at most. A remesh moves x₀ by its mesh error,
+/// which is below what the accepted step allowed, so the fold it crossed
+/// lies within about a step; bounded only by the largest step, the search
+/// made ~10³ corrector attempts where that step is 10²⁹⁸ (a pull to
+/// F/((2πn)²B) = 10³⁰⁰).
+const FOLD_BEHIND_DOUBLINGS: u32 = 9;
+
 /// What a run with a tolerance achieved (see
 /// [`Continuation::tolerance`](super::Continuation::tolerance)), in the
 /// plane of the diagram.
@@ -390,13 +398,17 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
 
     /// After a remesh that moved x₀ past a fold: the fold located behind
     /// x₀ (in s ∈ [−d, 0] along τ₀, d doubling from half the step, at most
-    /// to the largest step, until dλ/ds has its old sign there) and its
-    /// mesh error measured; `None` when it cannot be bracketed.
+    /// [`FOLD_BEHIND_DOUBLINGS`] times and to the largest step, until dλ/ds
+    /// has its old sign there) and its mesh error measured; `None` when it
+    /// cannot be bracketed.
     pub(super) fn fold_behind(&mut self) -> Option<(super::corrector::Corrected, f64)> {
         let q = self.cont.parameter;
         let f0 = self.t0.p[q];
         let mut back = -0.5 * self.ds;
-        while -back <= self.cont.ds_max {
+        for _ in 0..=FOLD_BEHIND_DOUBLINGS {
+            if -back > self.cont.ds_max {
+                break;
+            }
             if let Ok(c) = self.correct(back, false)
                 && c.tangent.p[q] * f0 < 0.0
             {
