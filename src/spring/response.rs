@@ -66,7 +66,7 @@ pub struct Stretch {
     /// The curve points it covers.
     pub range: Range<usize>,
     /// The number of loops on it (the most common count of its points),
-    /// where the model counts loops.
+    /// where the model counts loops and no other count is as common.
     pub loops: Option<u32>,
 }
 
@@ -96,13 +96,27 @@ pub struct BranchMatch {
 ///   ([`crate::rod::Equilibrium::loops`]): n on the helix and on the flat
 ///   primary branch, `None` where the shape leaves its plane;
 /// - a **pop-out** is a maximum-force fold followed by the next
-///   minimum-force fold, unless the loop count is known and the same at
-///   every point from the previous pop-out to the next fold pair: an exact
-///   helix has force folds but keeps its n loops, so it never pops one,
-///   while the rod's counts, undefined in its 3D excursions, never hide
-///   one;
+///   minimum-force fold across which the spring loses a loop. Between two
+///   fold pairs (and before the first, after the last) the loop count is
+///   the count that three in four of the known counts of the points there
+///   agree on (`None` where fewer than two are known or they disagree
+///   more: the rod's count flickers in its 3D excursions). A pair between
+///   equal counts is
+///   no pop-out (an exact helix has force folds but keeps its n loops, as
+///   the rod near θ0 = 90° has small fold pairs that lose none), one
+///   between a count and a lower one is. Where pairs follow one another
+///   with no known count between them (the rod's 3D excursions), the loops
+///   lost from the count before the first to the count after the last say
+///   how many of them popped, and those are the ones with the widest
+///   hysteresis (F_max − F_min): n = 8 at (89.5°, 20, 0.05) has five
+///   pairs in a row, four with hystereses 0.002–0.03 in F/((2πn)²B) and
+///   one with 1.4e-4, from 7 loops to 3. Where a count is unknown on
+///   either side, or more loops are lost than there are pairs (loops also
+///   unloop without a fold), or loops are gained, every pair of the run
+///   is a pop-out: an undefined count never hides one;
 /// - a **stretch** is a piece of the curve between pop-outs, with the most
-///   common known loop count of its points;
+///   common known loop count of its points (`None` where two are equally
+///   common);
 /// - the **stability** of a point under a [`Control`] is its index, carried
 ///   from the rest state through the folds ([`Response::stability`],
 ///   [`crate::stability`]): within the model's own degrees of freedom (the
@@ -319,20 +333,44 @@ impl Response {
     #[must_use]
     pub fn pop_outs(&self) -> Vec<PopOut> {
         let pairs = self.force_fold_pairs();
-        let mut out = Vec::new();
-        let mut from = 0;
-        for (i, &(max, min)) in pairs.iter().enumerate() {
-            let until = pairs.get(i + 1).map_or(self.curve.len(), |p| p.0.index + 1);
-            let around = &self.loops[from.min(until)..until];
-            let kept_its_loops = around
-                .first()
-                .is_some_and(|first| first.is_some() && around.iter().all(|l| l == first));
-            if !kept_its_loops {
-                out.push(PopOut { max, min });
-                from = (min.index + 1).min(until);
+        // the loop count between consecutive pairs (before the first, after
+        // the last): the most common known count of the points there
+        let counts: Vec<Option<u32>> = (0..=pairs.len())
+            .map(|k| {
+                let from = if k == 0 { 0 } else { pairs[k - 1].1.index + 1 };
+                let until = pairs.get(k).map_or(self.curve.len(), |p| p.0.index + 1);
+                settled(&self.loops[from.min(until)..until])
+            })
+            .collect();
+        let mut popped = vec![false; pairs.len()];
+        let mut a = 0;
+        while a < pairs.len() {
+            // a run of pairs with no known count between them
+            let mut b = a + 1;
+            while b < pairs.len() && counts[b].is_none() {
+                b += 1;
             }
+            let lost = match (counts[a], counts[b]) {
+                (Some(before), Some(after)) if after <= before => (before - after) as usize,
+                _ => usize::MAX,
+            };
+            if lost >= b - a {
+                popped[a..b].fill(true);
+            } else {
+                let mut widest: Vec<usize> = (a..b).collect();
+                widest.sort_by(|&i, &j| hysteresis(&pairs[j]).total_cmp(&hysteresis(&pairs[i])));
+                for &i in widest.iter().take(lost) {
+                    popped[i] = true;
+                }
+            }
+            a = b;
         }
-        out
+        pairs
+            .into_iter()
+            .zip(popped)
+            .filter(|(_, p)| *p)
+            .map(|((max, min), _)| PopOut { max, min })
+            .collect()
     }
 
     /// Every maximum-force fold paired with the next minimum-force fold.
@@ -536,17 +574,38 @@ impl core::fmt::Display for Response {
     }
 }
 
-/// The most common known value (the smallest of equally common ones).
+/// The most common known value, `None` where none is known or two are
+/// equally common.
 fn mode(values: &[Option<u32>]) -> Option<u32> {
     let mut sorted: Vec<u32> = values.iter().flatten().copied().collect();
     sorted.sort_unstable();
-    let mut best: Option<(u32, usize)> = None;
+    // (count, how many points have it, whether another count has as many)
+    let mut best: Option<(u32, usize, bool)> = None;
     for run in sorted.chunk_by(|a, b| a == b) {
-        if best.is_none_or(|(_, n)| run.len() > n) {
-            best = Some((run[0], run.len()));
+        match best {
+            Some((_, n, _)) if run.len() < n => {}
+            Some((v, n, _)) if run.len() == n => best = Some((v, n, true)),
+            _ => best = Some((run[0], run.len(), false)),
         }
     }
-    best.map(|(v, _)| v)
+    best.and_then(|(v, _, tied)| (!tied).then_some(v))
+}
+
+/// The loop count that at least three in four of the known counts agree
+/// on, from two known counts up; `None` otherwise. The rod's count
+/// flickers where its shape is three-dimensional (0 and 1 alternating
+/// after the pop-outs of n = 4 at θ0 = 87.35°), and a count that a bare
+/// majority holds there said that a pop-out lost no loop.
+fn settled(values: &[Option<u32>]) -> Option<u32> {
+    let known = values.iter().flatten().count();
+    let v = mode(values)?;
+    let agree = values.iter().flatten().filter(|&&c| c == v).count();
+    (known >= 2 && 4 * agree >= 3 * known).then_some(v)
+}
+
+/// F_max − F_min of a pair of force folds.
+fn hysteresis((max, min): &(Fold, Fold)) -> f64 {
+    max.point.force - min.point.force
 }
 
 fn interpolate(
@@ -626,6 +685,126 @@ mod tests {
         assert_eq!(pull.pop_outs().len(), 1);
         let same = vec![Some(2); pull.curve().len()];
         assert!(pull.with_loops(same).unwrap().pop_outs().is_empty());
+    }
+
+    /// Extension t ∈ [0, 4], force 0.05 t + A_k sin 2πt with amplitude A_k
+    /// on [k, k + 1]: a fold pair in each of the first three periods
+    /// (maximum at k + ¼ … k + 0.32 where 0.05 + 2πA_k cos 2πt = 0,
+    /// minimum near k + ¾, hysteresis ≈ 2A_k), none in the last; `loops(t)` the loop count of each point.
+    fn three_pairs(amplitudes: [f64; 3], loops: impl Fn(f64) -> Option<u32>) -> Response {
+        let mut c = ForceExtension::new("w", "t", crate::ForceScale::of_coils(1).unwrap());
+        let n = 801;
+        let mut counts = Vec::new();
+        for i in 0..n {
+            let t = 4.0 * i as f64 / (n - 1) as f64;
+            let a = amplitudes.get(t as usize).copied().unwrap_or(0.0);
+            c.push(ForcePoint {
+                extension: t,
+                force: 0.05 * t + a * (2.0 * core::f64::consts::PI * t).sin(),
+                parameter: t,
+            });
+            counts.push(loops(t));
+        }
+        Response::new(
+            "test",
+            Target::Force(1.0),
+            c,
+            Termination::ParameterValue(4.0),
+        )
+        .with_loops(counts)
+        .unwrap()
+    }
+
+    #[test]
+    fn pairs_with_no_known_count_between_them_pop_as_many_loops_as_are_lost() {
+        // 5 loops before the first pair, 3 after the last, unknown between:
+        // two of the three popped, the two widest (A = 0.1 and 0.3).
+        let outside = |before: u32, after: u32| {
+            move |t: f64| match t {
+                t if t < 0.2 => Some(before),
+                t if t > 2.8 => Some(after),
+                _ => None,
+            }
+        };
+        let pull = three_pairs([0.1, 0.02, 0.3], outside(5, 3));
+        assert_eq!(pull.force_fold_pairs().len(), 3);
+        let at: Vec<f64> = pull
+            .pop_outs()
+            .iter()
+            .map(|p| p.max.point.extension)
+            .collect();
+        assert_eq!(at.len(), 2);
+        assert!(
+            (at[0] - 0.25).abs() < 0.1 && (at[1] - 2.25).abs() < 0.1,
+            "{at:?}"
+        );
+        // the same counts either side: none popped
+        assert!(
+            three_pairs([0.1, 0.02, 0.3], outside(4, 4))
+                .pop_outs()
+                .is_empty()
+        );
+        // more lost than there are pairs (loops unloop without a fold too),
+        // loops gained, or a count unknown on one side: every pair popped
+        assert_eq!(
+            three_pairs([0.1, 0.02, 0.3], outside(7, 3))
+                .pop_outs()
+                .len(),
+            3
+        );
+        assert_eq!(
+            three_pairs([0.1, 0.02, 0.3], outside(3, 5))
+                .pop_outs()
+                .len(),
+            3
+        );
+        let unknown_after = |t: f64| (t < 0.2).then_some(5);
+        assert_eq!(
+            three_pairs([0.1, 0.02, 0.3], unknown_after)
+                .pop_outs()
+                .len(),
+            3
+        );
+        // two counts equally common before the first pair: unknown there
+        let tied = |t: f64| match t {
+            t if t < 0.1 => Some(5),
+            t if t < 0.2 => Some(6),
+            t if t > 2.8 => Some(4),
+            _ => None,
+        };
+        assert_eq!(three_pairs([0.1, 0.02, 0.3], tied).pop_outs().len(), 3);
+        // known counts between the pairs decide each alone: 5, 5, 4, 3
+        let known = |t: f64| {
+            Some(match t {
+                t if t < 0.8 => 5,
+                t if t < 1.8 => 5,
+                t if t < 2.8 => 4,
+                _ => 3,
+            })
+        };
+        let at: Vec<f64> = three_pairs([0.1, 0.02, 0.3], known)
+            .pop_outs()
+            .iter()
+            .map(|p| p.max.point.extension)
+            .collect();
+        assert_eq!(at.len(), 2);
+        assert!(
+            (at[0] - 1.25).abs() < 0.1 && (at[1] - 2.25).abs() < 0.1,
+            "{at:?}"
+        );
+    }
+
+    #[test]
+    fn a_settled_count_is_held_by_three_in_four_known_counts() {
+        let (a, b, u) = (Some(0), Some(1), None);
+        assert_eq!(settled(&[a, a, a, b, u, u]), Some(0));
+        // a bare majority (four of seven) is the mode, not settled
+        assert_eq!(mode(&[a, a, a, a, b, b, b]), Some(0));
+        assert_eq!(settled(&[a, a, a, a, b, b, b]), None);
+        // one known count is no evidence; equally common counts no mode
+        assert_eq!(settled(&[u, a, u]), None);
+        assert_eq!(mode(&[a, b]), None);
+        assert_eq!(mode(&[u, u]), None);
     }
 
     #[test]
