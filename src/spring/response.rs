@@ -98,22 +98,21 @@ pub struct BranchMatch {
 /// - a **pop-out** is a maximum-force fold followed by the next
 ///   minimum-force fold across which the spring loses a loop. Between two
 ///   fold pairs (and before the first, after the last) the loop count is
-///   the count that three in four of the known counts of the points there
-///   agree on (`None` where fewer than two are known or they disagree
-///   more: the rod's count flickers in its 3D excursions). A pair between
-///   equal counts is
-///   no pop-out (an exact helix has force folds but keeps its n loops, as
-///   the rod near θ0 = 90° has small fold pairs that lose none), one
-///   between a count and a lower one is. Where pairs follow one another
-///   with no known count between them (the rod's 3D excursions), the loops
-///   lost from the count before the first to the count after the last say
-///   how many of them popped, and those are the ones with the widest
-///   hysteresis (F_max − F_min): n = 8 at (89.5°, 20, 0.05) has five
-///   pairs in a row, four with hystereses 0.002–0.03 in F/((2πn)²B) and
-///   one with 1.4e-4, from 7 loops to 3. Where a count is unknown on
-///   either side, or more loops are lost than there are pairs (loops also
-///   unloop without a fold), or loops are gained, every pair of the run
-///   is a pop-out: an undefined count never hides one;
+///   *settled* where three in four of the known counts of the points there
+///   agree (two known at least; the rod's count is undefined in its 3D
+///   excursions and flickers between 0 and 1 late in a pull). A pair is no
+///   pop-out where every known count on both sides is one and the same (an
+///   exact helix has force folds but keeps its n loops, as the rod near
+///   θ0 = 90° has small fold pairs that lose none). Where pairs follow one
+///   another with no settled count between them, and the settled counts
+///   before the first and after the last lose k ≥ 1 loops, fewer than
+///   there are pairs, the k pairs of widest hysteresis (F_max − F_min) are
+///   the pop-outs: n = 8 at (89.5°, 20, 0.05) has five pairs in a row, four
+///   with hystereses 0.002–0.03 in F/((2πn)²B) and one with 1.4e-4, from
+///   7 loops to 3. Every other pair is a pop-out (a count unknown or not
+///   unanimous, loops gained, as many lost as there are pairs or more:
+///   loops also unloop without a fold): an undefined count never hides
+///   one;
 /// - a **stretch** is a piece of the curve between pop-outs, with the most
 ///   common known loop count of its points (`None` where two are equally
 ///   common);
@@ -335,33 +334,37 @@ impl Response {
         let pairs = self.force_fold_pairs();
         // the loop count between consecutive pairs (before the first, after
         // the last): the most common known count of the points there
-        let counts: Vec<Option<u32>> = (0..=pairs.len())
+        let between: Vec<&[Option<u32>]> = (0..=pairs.len())
             .map(|k| {
                 let from = if k == 0 { 0 } else { pairs[k - 1].1.index + 1 };
                 let until = pairs.get(k).map_or(self.curve.len(), |p| p.0.index + 1);
-                settled(&self.loops[from.min(until)..until])
+                &self.loops[from.min(until)..until]
             })
             .collect();
+        let counts: Vec<Option<u32>> = between.iter().map(|b| settled(b)).collect();
         let mut popped = vec![false; pairs.len()];
         let mut a = 0;
         while a < pairs.len() {
-            // a run of pairs with no known count between them
+            // a run of pairs with no settled count between them
             let mut b = a + 1;
             while b < pairs.len() && counts[b].is_none() {
                 b += 1;
             }
             let lost = match (counts[a], counts[b]) {
-                (Some(before), Some(after)) if after <= before => (before - after) as usize,
-                _ => usize::MAX,
+                (Some(before), Some(after)) if after <= before => Some((before - after) as usize),
+                _ => None,
             };
-            if lost >= b - a {
-                popped[a..b].fill(true);
-            } else {
-                let mut widest: Vec<usize> = (a..b).collect();
-                widest.sort_by(|&i, &j| hysteresis(&pairs[j]).total_cmp(&hysteresis(&pairs[i])));
-                for &i in widest.iter().take(lost) {
-                    popped[i] = true;
+            match lost {
+                Some(0) if b - a == 1 && unanimous(between[a]) && unanimous(between[b]) => {}
+                Some(k) if k >= 1 && k < b - a => {
+                    let mut widest: Vec<usize> = (a..b).collect();
+                    widest
+                        .sort_by(|&i, &j| hysteresis(&pairs[j]).total_cmp(&hysteresis(&pairs[i])));
+                    for &i in widest.iter().take(k) {
+                        popped[i] = true;
+                    }
                 }
+                _ => popped[a..b].fill(true),
             }
             a = b;
         }
@@ -603,6 +606,12 @@ fn settled(values: &[Option<u32>]) -> Option<u32> {
     (known >= 2 && 4 * agree >= 3 * known).then_some(v)
 }
 
+/// Whether every known count agrees (two known at least).
+fn unanimous(values: &[Option<u32>]) -> bool {
+    let known: Vec<u32> = values.iter().flatten().copied().collect();
+    known.len() >= 2 && known.iter().all(|&c| c == known[0])
+}
+
 /// F_max − F_min of a pair of force folds.
 fn hysteresis((max, min): &(Fold, Fold)) -> f64 {
     max.point.force - min.point.force
@@ -738,14 +747,15 @@ mod tests {
             (at[0] - 0.25).abs() < 0.1 && (at[1] - 2.25).abs() < 0.1,
             "{at:?}"
         );
-        // the same counts either side: none popped
-        assert!(
+        // no loop lost across the run, more lost than there are pairs
+        // (loops unloop without a fold too), loops gained, or a count
+        // unknown on one side: every pair popped
+        assert_eq!(
             three_pairs([0.1, 0.02, 0.3], outside(4, 4))
                 .pop_outs()
-                .is_empty()
+                .len(),
+            3
         );
-        // more lost than there are pairs (loops unloop without a fold too),
-        // loops gained, or a count unknown on one side: every pair popped
         assert_eq!(
             three_pairs([0.1, 0.02, 0.3], outside(7, 3))
                 .pop_outs()
@@ -773,6 +783,22 @@ mod tests {
             _ => None,
         };
         assert_eq!(three_pairs([0.1, 0.02, 0.3], tied).pop_outs().len(), 3);
+        // 5, then 0, then 0 and 1 flickering, then 0 (late in a rod's
+        // pull): a count settled but not unanimous is no evidence that the
+        // pairs on either side kept their loops, so all three popped
+        let flicker = |t: f64| {
+            Some(match t {
+                t if t < 0.8 => 5,
+                t if t < 1.8 => u32::from(t > 1.7),
+                _ => 0,
+            })
+        };
+        let at: Vec<f64> = three_pairs([0.1, 0.02, 0.3], flicker)
+            .pop_outs()
+            .iter()
+            .map(|p| p.max.point.extension)
+            .collect();
+        assert_eq!(at.len(), 3, "{at:?}");
         // known counts between the pairs decide each alone: 5, 5, 4, 3
         let known = |t: f64| {
             Some(match t {
