@@ -724,6 +724,16 @@ mod tests {
         .unwrap()
     }
 
+    /// Where the pop-outs of [`three_pairs`] with amplitudes 0.1, 0.02, 0.3
+    /// peak (the extensions of their maximum-force folds).
+    fn popped_at(loops: impl Fn(f64) -> Option<u32>) -> Vec<f64> {
+        three_pairs([0.1, 0.02, 0.3], loops)
+            .pop_outs()
+            .iter()
+            .map(|p| p.max.point.extension)
+            .collect()
+    }
+
     #[test]
     fn pairs_with_no_known_count_between_them_pop_as_many_loops_as_are_lost() {
         // 5 loops before the first pair, 3 after the last, unknown between:
@@ -735,13 +745,13 @@ mod tests {
                 _ => None,
             }
         };
-        let pull = three_pairs([0.1, 0.02, 0.3], outside(5, 3));
-        assert_eq!(pull.force_fold_pairs().len(), 3);
-        let at: Vec<f64> = pull
-            .pop_outs()
-            .iter()
-            .map(|p| p.max.point.extension)
-            .collect();
+        assert_eq!(
+            three_pairs([0.1, 0.02, 0.3], outside(5, 3))
+                .force_fold_pairs()
+                .len(),
+            3
+        );
+        let at = popped_at(outside(5, 3));
         assert_eq!(at.len(), 2);
         assert!(
             (at[0] - 0.25).abs() < 0.1 && (at[1] - 2.25).abs() < 0.1,
@@ -750,31 +760,10 @@ mod tests {
         // no loop lost across the run, more lost than there are pairs
         // (loops unloop without a fold too), loops gained, or a count
         // unknown on one side: every pair popped
-        assert_eq!(
-            three_pairs([0.1, 0.02, 0.3], outside(4, 4))
-                .pop_outs()
-                .len(),
-            3
-        );
-        assert_eq!(
-            three_pairs([0.1, 0.02, 0.3], outside(7, 3))
-                .pop_outs()
-                .len(),
-            3
-        );
-        assert_eq!(
-            three_pairs([0.1, 0.02, 0.3], outside(3, 5))
-                .pop_outs()
-                .len(),
-            3
-        );
-        let unknown_after = |t: f64| (t < 0.2).then_some(5);
-        assert_eq!(
-            three_pairs([0.1, 0.02, 0.3], unknown_after)
-                .pop_outs()
-                .len(),
-            3
-        );
+        assert_eq!(popped_at(outside(4, 4)).len(), 3);
+        assert_eq!(popped_at(outside(7, 3)).len(), 3);
+        assert_eq!(popped_at(outside(3, 5)).len(), 3);
+        assert_eq!(popped_at(|t: f64| (t < 0.2).then_some(5)).len(), 3);
         // two counts equally common before the first pair: unknown there
         let tied = |t: f64| match t {
             t if t < 0.1 => Some(5),
@@ -782,7 +771,7 @@ mod tests {
             t if t > 2.8 => Some(4),
             _ => None,
         };
-        assert_eq!(three_pairs([0.1, 0.02, 0.3], tied).pop_outs().len(), 3);
+        assert_eq!(popped_at(tied).len(), 3);
         // 5, then 0, then 0 and 1 flickering, then 0 (late in a rod's
         // pull): a count settled but not unanimous is no evidence that the
         // pairs on either side kept their loops, so all three popped
@@ -793,26 +782,16 @@ mod tests {
                 _ => 0,
             })
         };
-        let at: Vec<f64> = three_pairs([0.1, 0.02, 0.3], flicker)
-            .pop_outs()
-            .iter()
-            .map(|p| p.max.point.extension)
-            .collect();
-        assert_eq!(at.len(), 3, "{at:?}");
+        assert_eq!(popped_at(flicker).len(), 3);
         // known counts between the pairs decide each alone: 5, 5, 4, 3
         let known = |t: f64| {
             Some(match t {
-                t if t < 0.8 => 5,
                 t if t < 1.8 => 5,
                 t if t < 2.8 => 4,
                 _ => 3,
             })
         };
-        let at: Vec<f64> = three_pairs([0.1, 0.02, 0.3], known)
-            .pop_outs()
-            .iter()
-            .map(|p| p.max.point.extension)
-            .collect();
+        let at = popped_at(known);
         assert_eq!(at.len(), 2);
         assert!(
             (at[0] - 1.25).abs() < 0.1 && (at[1] - 2.25).abs() < 0.1,
