@@ -11,7 +11,7 @@
 //!
 //! Without `--compute`, n = 4 is read from the committed diagram
 //! `docs/data/phase_diagram_n4.csv` (what `--compute` writes), other n from
-//! `docs/data/phase_diagram_n<N>.csv` where committed (n = 2, 3, 6, 8), else
+//! `docs/data/phase_diagram_n<N>.csv` where committed (n = 2, 3, 6, 7, 8), else
 //! computed. `--compute` pulls the paper's spring at θ0 = 89.8°, A/B = 10,
 //! ν = 0.05 (n coils), continues each pop-out's maximum-force fold down in
 //! θ0 to its cusp, and from there traces the curve of cusps in A/B (at
@@ -21,7 +21,10 @@
 //! Where a spring loses fewer loops by a fold at the reference than it can
 //! (n = 8: 3 of 7), the other pop-outs are seeded from a scene where they
 //! exist (`SEEDS`: n = 8 at θ0 = 89.5°, A/B = 50): their cusps in θ0 at that
-//! A/B start the same lines. `--extend FILE` takes the lines of a diagram
+//! A/B start the same lines. While the diagram still maps fewer than n − 1,
+//! the first of the check scenes at ν = 0.05 (`CHECK_SCENES`) where a pull
+//! to F/((2πn)²B) = 3 sees more pop-outs than it counts is a seed too
+//! (n = 7: 5 of 6 at the reference, the sixth seeded at (89°, 20)). `--extend FILE` takes the lines of a diagram
 //! computed before (the committed n = 8 file of the reference pop-outs)
 //! instead of recomputing them, and adds the seeded pop-outs' lines.
 //!
@@ -58,8 +61,8 @@
 //! ([`hockle::rod::PhaseDiagram::is_complete`]: n = 8). A diagram computed
 //! here (no committed one for n) is first checked against pulls to
 //! F/((2πn)²B) = 3 at 14 scenes about the reference (`CHECK_SCENES`);
-//! where a pull sees more pop-outs than it counts, every scene prints
-//! `pop_outs=unknown` and why (n = 5, docs/ACCURACY.md).
+//! where a pull sees more pop-outs than a complete diagram counts, every
+//! scene prints `pop_outs=unknown` and why (n = 5, docs/ACCURACY.md).
 
 use std::error::Error;
 use std::ops::ControlFlow;
@@ -435,15 +438,19 @@ fn beyond(i: usize, nu: f64, end: LineEnd) -> CuspLine {
 /// solution) and the seed's A/B.
 type Seeded = (NikolaiRod, Solution, f64);
 
-/// The pop-outs at the [`SEEDS`] of `coils` that `known`'s lines do not
-/// map: the family at the seed, the pop-out's cusp at the seed's A/B (its
+/// The pop-outs at `seeds` (θ0 in degrees, A/B; ν = 0.05) that `known`'s
+/// lines do not map: the family at the seed, the pop-out's cusp at the seed's A/B (its
 /// maximum-force fold continued down in θ0, an extended solution on
 /// [`INTERVALS`]) and that A/B. The pop-outs are found by a pull on [`SEED_INTERVALS`]
 /// and each cusp is taken from the pull on [`INTERVALS`] whose cusp is the
 /// same ([`SAME_CUSP_DEG`]).
-fn seeded(coils: u32, known: &PhaseDiagram) -> Result<Vec<Seeded>, Box<dyn Error + Send + Sync>> {
+fn seeded(
+    coils: u32,
+    known: &PhaseDiagram,
+    seeds: &[(f64, f64)],
+) -> Result<Vec<Seeded>, Box<dyn Error + Send + Sync>> {
     let mut out: Vec<Seeded> = Vec::new();
-    for &(_, t, ab) in SEEDS.iter().filter(|s| s.0 == coils) {
+    for &(t, ab) in seeds {
         let rod = Rod::new(coils, t.to_radians(), Stiffness::nikolai(ab, NU)?)?;
         let family = NikolaiRod::new(rod, NU)?;
         let cusps = |n: usize| -> Result<Vec<FoldPoint>, Box<dyn Error + Send + Sync>> {
@@ -595,15 +602,46 @@ fn compute(
             pop_out_lines(coils, i, &pair[0])
         })?);
     }
-    let known = PhaseDiagram::new(coils, lines.clone())?;
-    let first = known.pop_out_count();
-    let seeds = seeded(coils, &known)?;
-    lines.extend(in_parallel(&seeds, |k, (family, c0, ab)| {
-        lines_through(family, first + k, c0, *ab)
-    })?);
-    let d = PhaseDiagram::new(coils, lines)?;
+    let listed: Vec<(f64, f64)> = SEEDS
+        .iter()
+        .filter(|s| s.0 == coils)
+        .map(|s| (s.1, s.2))
+        .collect();
+    let mut d = with_seeded(coils, &mut lines, &listed)?;
+    // Pop-outs that neither the reference nor a listed seed shows (n = 7:
+    // 5 of 6 at the reference, the sixth at (89°, 20, 0.05)): seeded from
+    // the first check scene at ν = 0.05 where a pull sees more pop-outs
+    // than the diagram counts, while it maps fewer than n − 1. Each round
+    // adds a pop-out or stops.
+    while !d.is_complete() {
+        let Some((t, a, _)) = first_excess(coils, &d, |nu| nu == NU)? else {
+            break;
+        };
+        let before = d.pop_out_count();
+        d = with_seeded(coils, &mut lines, &[(t, a)])?;
+        if d.pop_out_count() == before {
+            eprintln!("seed ({t}°, {a}, {NU}): no pop-out the diagram does not map");
+            break;
+        }
+    }
     eprintln!("computed in {:.1} s", clock.elapsed().as_secs_f64());
     Ok(d)
+}
+
+/// `lines` with the lines of the pop-outs at `seeds` that they do not map
+/// added, and their diagram.
+fn with_seeded(
+    coils: u32,
+    lines: &mut Vec<CuspLine>,
+    seeds: &[(f64, f64)],
+) -> Result<PhaseDiagram, Box<dyn Error + Send + Sync>> {
+    let known = PhaseDiagram::new(coils, lines.clone())?;
+    let first = known.pop_out_count();
+    let found = seeded(coils, &known, seeds)?;
+    lines.extend(in_parallel(&found, |k, (family, c0, ab)| {
+        lines_through(family, first + k, c0, *ab)
+    })?);
+    Ok(PhaseDiagram::new(coils, lines.clone())?)
 }
 
 /// The lines of every item, one thread per item (in item order).
@@ -739,7 +777,7 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
         };
         if !force {
             eprintln!(
-                "no committed diagram for n = {coils} ({} not found; committed: n = 2, 3, 4, 6, 8): \
+                "no committed diagram for n = {coils} ({} not found; committed: n = 2, 3, 4, 6, 7, 8): \
                  computing it, which can take minutes",
                 committed.display()
             );
@@ -866,7 +904,7 @@ fn carry_to_scene(
 
 /// The scenes a computed diagram is checked on: about the reference,
 /// where the regions are narrowest ((θ0°, A/B, ν)).
-const CHECK_SCENES: [(f64, f64, f64); 14] = [
+const CHECK_SCENES: [Scene; 14] = [
     (88.0, 5.0, 0.05),
     (88.0, 10.0, 0.05),
     (88.0, 20.0, 0.05),
@@ -885,19 +923,46 @@ const CHECK_SCENES: [(f64, f64, f64); 14] = [
 
 /// Checks a diagram computed here (not a committed one, whose regions the
 /// docs check against pulls) against pulls to F/((2πn)²B) = 3 at
-/// [`CHECK_SCENES`]: a pull that sees more pop-outs than the diagram counts
-/// (which counts them at any force) contradicts it. n = 5 does (its
-/// pop-out 2 closes at tips about the reference while pulls away from it
-/// still lose a fourth loop: folds that re-pair rather than meet). Returns
-/// why, where contradicted.
+/// [`CHECK_SCENES`]: a pull that sees more pop-outs than a complete
+/// diagram counts (which counts them at any force) contradicts it. n = 5
+/// does (its pop-out 2 closes at tips about the reference while pulls away
+/// from it still lose a fourth loop: folds that re-pair rather than meet).
+/// An incomplete diagram ([`PhaseDiagram::is_complete`]) counts a lower
+/// bound, which more pop-outs do not contradict. Returns why, where
+/// contradicted.
 fn contradicted_by_pulls(
     coils: u32,
     diagram: &PhaseDiagram,
 ) -> Result<Option<&'static str>, Box<dyn Error + Send + Sync>> {
-    for (t, a, nu) in CHECK_SCENES {
+    if !diagram.is_complete() {
+        return Ok(None);
+    }
+    let Some((t, a, nu)) = first_excess(coils, diagram, |_| true)? else {
+        return Ok(None);
+    };
+    eprintln!(
+        "the diagram of n = {coils} computed here counts fewer pop-outs than a pull sees at \
+         ({t}°, {a}, {nu}): it answers no scene"
+    );
+    Ok(Some(
+        "the diagram computed for this n is contradicted by a pull (docs/ACCURACY.md: its regions are not \
+         bounded by single cusp curves there)",
+    ))
+}
+
+/// A scene: θ0 in degrees, A/B, ν.
+type Scene = (f64, f64, f64);
+
+/// The first of the [`CHECK_SCENES`] whose ν passes `at` where a pull to
+/// F/((2πn)²B) = 3 sees more pop-outs than `diagram` counts.
+fn first_excess(
+    coils: u32,
+    diagram: &PhaseDiagram,
+    at: impl Fn(f64) -> bool,
+) -> Result<Option<Scene>, Box<dyn Error + Send + Sync>> {
+    for (t, a, nu) in CHECK_SCENES.into_iter().filter(|s| at(s.2)) {
         let spring = Spring::from_degrees(coils, t, Stiffness::nikolai(a, nu)?)?;
-        // (a diagram maps at most n − 1 pop-outs; a pull has counted n:
-        // n = 8 at (89.5°, 20, 0.05), docs/ACCURACY.md)
+        // (a diagram maps at most n − 1 pop-outs)
         let pulled = RodModel::default()
             .pull(&spring, 3.0)?
             .pop_outs()
@@ -906,14 +971,7 @@ fn contradicted_by_pulls(
         let read = diagram.pop_outs(t.to_radians(), a, nu);
         eprintln!("check: ({t}°, {a}, {nu}): pulled to 3: {pulled} pop-outs, diagram: {read:?}");
         if matches!(read, Ok(n) if n < pulled) {
-            eprintln!(
-                "the diagram of n = {coils} computed here counts fewer pop-outs than a pull sees at \
-                 ({t}°, {a}, {nu}): it answers no scene"
-            );
-            return Ok(Some(
-                "the diagram computed for this n is contradicted by a pull (docs/ACCURACY.md: its regions are not \
-                 bounded by single cusp curves there)",
-            ));
+            return Ok(Some((t, a, nu)));
         }
     }
     Ok(None)

@@ -248,7 +248,8 @@ impl PhaseDiagram {
     /// A/B = 10, ν = 0.05), which for n = 2, 3, 4, 6 has n − 1; where it has
     /// fewer (n = 8: 3 of 7 loops pop out there, the others unloop without
     /// a fold) the others are seeded from a scene where they pop out
-    /// (n = 8: θ0 = 89.5°, A/B = 50). Until every loop is mapped,
+    /// (n = 8: θ0 = 89.5°, A/B = 50; n = 7: 89°, 20, found by the
+    /// example's check pulls). Until every loop is mapped,
     /// [`Self::pop_outs`] counts the mapped ones: a lower bound.
     #[must_use]
     pub fn is_complete(&self) -> bool {

@@ -443,6 +443,34 @@ const SCENES_N8: [(f64, f64, f64, usize, f64); 8] = [
     (82.0, 10.0, -0.4, 24, 3.0),
 ];
 
+/// n = 7 (`docs/data/phase_diagram_n7.csv`, examples/phase_diagram
+/// `--coils 7 --compute`): the reference spring has 5 pop-outs of 6, the
+/// sixth seeded by the example at (89°, 20, 0.05). Scenes at least 0.1°
+/// from every line, pulled to F/((2πn)²B) = 3 on 48 intervals (about 7 per
+/// coil; the counts are those of the adaptive pulls of docs/ACCURACY.md):
+/// 6, 3, 2, 1, 0 pop-outs at ν = 0.05 and 1 at ν = 0.2.
+#[test]
+fn direct_pulls_see_the_n7_pop_outs_the_diagram_predicts() {
+    let d =
+        PhaseDiagram::from_csv(7, include_str!("../../docs/data/phase_diagram_n7.csv")).unwrap();
+    assert!(d.is_complete());
+    for (t, a, nu) in [
+        (89.6, 20.0, 0.05),
+        (89.5, 10.0, 0.05),
+        (89.0, 10.0, 0.05),
+        (88.0, 10.0, 0.05),
+        (88.0, 5.0, 0.05),
+        (89.5, 10.0, 0.2),
+    ] {
+        let predicted = predicted_away_from_lines(&d, t, a, nu);
+        assert_eq!(
+            pulled_pop_outs_on(7, t, a, nu, 48, 3.0),
+            predicted,
+            "scene θ0 = {t}°, A/B = {a}, ν = {nu}"
+        );
+    }
+}
+
 /// The paper's spring as a `NikolaiRod`, the default search, and its
 /// three pop-outs (pulled to F/((2πn)²B) = 3 on the search's mesh).
 fn paper_pop_outs() -> (NikolaiRod, CuspSearch, Vec<[hockle::bvp::Solution; 2]>) {
