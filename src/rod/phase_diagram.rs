@@ -585,8 +585,8 @@ fn along(line: &CuspLine, x: f64) -> Bounds {
 /// scene's own A/B, the line whose tip lies above it says 90° and the
 /// other a θ0_c well below, so that interpolating the two in ν put a
 /// shallow ramp where the region has a steep edge (n = 4 at
-/// (89.943°, A/B = 2.89, ν = −0.061): read 89.72°, while a pull sees no
-/// such pop-out at any θ0 there). So where both lines end at a tip on the
+/// (89.943°, A/B = 2.89, ν = −0.061): read 89.72° and counted 3, where a
+/// pull sees 2). So where both lines end at a tip on the
 /// same side, the tip is interpolated in ν (in ln A/B) and each line is
 /// read at the scene's relative place between the interpolated ends,
 /// mapped onto its own ends (an affine map in ln A/B); beyond an
