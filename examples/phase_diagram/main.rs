@@ -24,9 +24,10 @@
 //! A/B start the same lines. While the diagram still maps fewer than n − 1,
 //! the first of the check scenes at ν = 0.05 (`CHECK_SCENES`) where a pull
 //! to F/((2πn)²B) = 3 sees more pop-outs than it counts is a seed too
-//! (n = 7: 5 of 6 at the reference, the sixth seeded at (89°, 20)). `--extend FILE` takes the lines of a diagram
-//! computed before (the committed n = 8 file of the reference pop-outs)
-//! instead of recomputing them, and adds the seeded pop-outs' lines.
+//! (n = 7: 5 of 6 at the reference, the sixth seeded at (89°, 20)).
+//! `--extend FILE` takes the lines of a diagram computed before (the
+//! committed n = 8 file of the reference pop-outs) instead of recomputing
+//! them, and adds the seeded pop-outs' lines.
 //!
 //! `--pull F` pulls each `--scene` too (the adaptive default rod, from rest
 //! to F/((2πn)²B) = F) and prints, after its line, one line
@@ -439,11 +440,11 @@ fn beyond(i: usize, nu: f64, end: LineEnd) -> CuspLine {
 type Seeded = (NikolaiRod, Solution, f64);
 
 /// The pop-outs at `seeds` (θ0 in degrees, A/B; ν = 0.05) that `known`'s
-/// lines do not map: the family at the seed, the pop-out's cusp at the seed's A/B (its
-/// maximum-force fold continued down in θ0, an extended solution on
-/// [`INTERVALS`]) and that A/B. The pop-outs are found by a pull on [`SEED_INTERVALS`]
-/// and each cusp is taken from the pull on [`INTERVALS`] whose cusp is the
-/// same ([`SAME_CUSP_DEG`]).
+/// lines do not map: the family at the seed, the pop-out's cusp at the
+/// seed's A/B (its maximum-force fold continued down in θ0, an extended
+/// solution on [`INTERVALS`]) and that A/B. The pop-outs are found by a
+/// pull on [`SEED_INTERVALS`] and each cusp is taken from the pull on
+/// [`INTERVALS`] whose cusp is the same ([`SAME_CUSP_DEG`]).
 fn seeded(
     coils: u32,
     known: &PhaseDiagram,

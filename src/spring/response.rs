@@ -332,8 +332,8 @@ impl Response {
     #[must_use]
     pub fn pop_outs(&self) -> Vec<PopOut> {
         let pairs = self.force_fold_pairs();
-        // the loop count between consecutive pairs (before the first, after
-        // the last): the most common known count of the points there
+        // the loop counts between consecutive pairs (before the first,
+        // after the last), and the settled count of each
         let between: Vec<&[Option<u32>]> = (0..=pairs.len())
             .map(|k| {
                 let from = if k == 0 { 0 } else { pairs[k - 1].1.index + 1 };
@@ -699,7 +699,8 @@ mod tests {
     /// Extension t ∈ [0, 4], force 0.05 t + A_k sin 2πt with amplitude A_k
     /// on [k, k + 1]: a fold pair in each of the first three periods
     /// (maximum at k + ¼ … k + 0.32 where 0.05 + 2πA_k cos 2πt = 0,
-    /// minimum near k + ¾, hysteresis ≈ 2A_k), none in the last; `loops(t)` the loop count of each point.
+    /// minimum near k + ¾, hysteresis ≈ 2A_k), none in the last;
+    /// `loops(t)` the loop count of each point.
     fn three_pairs(amplitudes: [f64; 3], loops: impl Fn(f64) -> Option<u32>) -> Response {
         let mut c = ForceExtension::new("w", "t", crate::ForceScale::of_coils(1).unwrap());
         let n = 801;
