@@ -53,6 +53,11 @@
 //! nor by a carry of its own), and a Markdown table per pop-out on standard
 //! error.
 //!
+//! `--cross-check` pulls a coarse grid over both planes (θ0 86–89.8°, A/B
+//! 1–100 at ν = 0.05, ν −0.2–0.3 at A/B = 10) to F/((2πn)²B) = 3 and
+//! prints the diagram's count beside each pull's (`cross_check.rs`): the
+//! full-grid cross-check, which fails where a pull sees more.
+//!
 //! `--scene THETA0_DEG,A_OVER_B,NU` (repeatable) prints one line per scene,
 //! `scene theta0=<deg> a_over_b=<x> nu=<x> pop_outs=<count>`, read off the
 //! diagram ([`hockle::rod::PhaseDiagram::pop_outs`]), not from a pull;
@@ -122,7 +127,7 @@ const SAME_CUSP_FORCE: f64 = 1e-3;
 const INTERVALS: usize = 24;
 
 fn usage() -> String {
-    "usage: phase_diagram [--coils N] [--out DIR] [--compute | --extend CSV | --check] [--scene THETA0_DEG,A_OVER_B,NU]… [--pull F] [--forces] [--force-map]".into()
+    "usage: phase_diagram [--coils N] [--out DIR] [--compute | --extend CSV | --check] [--scene THETA0_DEG,A_OVER_B,NU]… [--pull F] [--forces] [--force-map] [--cross-check]".into()
 }
 
 fn at(p: &FoldPoint) -> CuspAt {
@@ -687,6 +692,7 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
     let mut pull_to: Option<f64> = None;
     let mut carry = false;
     let mut map = false;
+    let mut cross = false;
     let mut extend: Option<PathBuf> = None;
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
@@ -711,6 +717,7 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
             "--check" => checks = true,
             "--forces" => carry = true,
             "--force-map" => map = true,
+            "--cross-check" => cross = true,
             "--coils" => {
                 let v = args.next().ok_or("--coils needs a number")?;
                 coils = v
@@ -796,6 +803,9 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
         }
         d
     };
+    if cross {
+        return cross_check::run(coils, &diagram);
+    }
     if scenes.is_empty() {
         // The reading (lines at fixed ν, interpolated in ν) against the
         // line traced in ν at A/B = 10.
@@ -1005,5 +1015,6 @@ fn pull_scene(
     Ok(())
 }
 
+mod cross_check;
 mod force_map;
 mod svg;
