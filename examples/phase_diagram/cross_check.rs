@@ -12,9 +12,7 @@
 
 use std::error::Error;
 
-use hockle::Stiffness;
 use hockle::rod::PhaseDiagram;
-use hockle::spring::{Model, RodModel, Spring};
 
 /// The example's error type.
 type Fallible<T> = Result<T, Box<dyn Error + Send + Sync>>;
@@ -29,8 +27,10 @@ pub const A_OVER_B: [f64; 5] = [1.0, 3.0, 10.0, 30.0, 100.0];
 pub const NU: [f64; 6] = [-0.2, -0.1, 0.0, 0.1, 0.2, 0.3];
 
 /// Prints one line per scene, `cross theta0=<deg> a_over_b=<x> nu=<x>
-/// diagram=<count|unknown> pulled=<count> near_line=<bool>`, and a summary
-/// on standard error; an error if a pull contradicts the diagram.
+/// diagram=<count|unknown> pulled=<count> reached=<bool> near_line=<bool>`
+/// (`reached`: whether the pull reached its force; one that stopped short
+/// counts its pop-outs so far), and a summary on standard error; an error
+/// if a pull contradicts the diagram.
 pub fn run(coils: u32, diagram: &PhaseDiagram) -> Fallible<()> {
     let scenes = THETA0_DEG.iter().flat_map(|&t| {
         let plane_nu = A_OVER_B.iter().map(move |&a| (t, a, 0.05));
@@ -43,11 +43,12 @@ pub fn run(coils: u32, diagram: &PhaseDiagram) -> Fallible<()> {
         let read = |deg: f64| diagram.pop_outs(deg.to_radians(), a, nu).ok();
         let count = read(t);
         let near_line = count != read(t - 0.1) || count != read((t + 0.1).min(89.999));
-        let spring = Spring::from_degrees(coils, t, Stiffness::nikolai(a, nu)?)?;
-        let pulled = RodModel::default().pull(&spring, FORCE)?.pop_outs().len();
+        let response = super::pulled(coils, (t, a, nu), FORCE)?;
+        let pulled = response.pop_outs().len();
+        let reached = response.reached_target();
         let shown = count.map_or("unknown".to_string(), |c| c.to_string());
         println!(
-            "cross theta0={t} a_over_b={a} nu={nu} diagram={shown} pulled={pulled} near_line={near_line}"
+            "cross theta0={t} a_over_b={a} nu={nu} diagram={shown} pulled={pulled} reached={reached} near_line={near_line}"
         );
         match count {
             None => unknown += 1,

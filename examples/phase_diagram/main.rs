@@ -972,10 +972,8 @@ fn first_excess(
     at: impl Fn(f64) -> bool,
 ) -> Result<Option<Scene>, Box<dyn Error + Send + Sync>> {
     for (t, a, nu) in CHECK_SCENES.into_iter().filter(|s| at(s.2)) {
-        let spring = Spring::from_degrees(coils, t, Stiffness::nikolai(a, nu)?)?;
         // (a diagram maps at most n − 1 pop-outs)
-        let pulled = RodModel::default()
-            .pull(&spring, 3.0)?
+        let pulled = pulled(coils, (t, a, nu), 3.0)?
             .pop_outs()
             .len()
             .min(coils as usize - 1);
@@ -988,6 +986,18 @@ fn first_excess(
     Ok(None)
 }
 
+/// The scene (n coils, C by the Nikolai equality) pulled from rest to
+/// F/((2πn)²B) = `to` by the default adaptive rod: the pull of every check
+/// of a diagram against pulls.
+fn pulled(
+    coils: u32,
+    (t, a, nu): Scene,
+    to: f64,
+) -> Result<hockle::spring::Response, Box<dyn Error + Send + Sync>> {
+    let spring = Spring::from_degrees(coils, t, Stiffness::nikolai(a, nu)?)?;
+    Ok(RodModel::default().pull(&spring, to)?)
+}
+
 /// `--pull`: the scene pulled from rest to F/((2πn)²B) = `to`, its
 /// pop-outs and their maximum forces.
 fn pull_scene(
@@ -995,8 +1005,7 @@ fn pull_scene(
     (t, a, nu): (f64, f64, f64),
     to: f64,
 ) -> Result<(), Box<dyn Error + Send + Sync>> {
-    let spring = Spring::from_degrees(coils, t, Stiffness::nikolai(a, nu)?)?;
-    let response = RodModel::default().pull(&spring, to)?;
+    let response = pulled(coils, (t, a, nu), to)?;
     let scale = response.curve().scale();
     let forces: Vec<String> = response
         .pop_outs()
