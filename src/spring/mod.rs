@@ -35,10 +35,13 @@
 //! ```
 
 mod answer;
+mod branch_match;
 mod choice;
 mod contact;
 mod elastica_model;
 mod helix_model;
+mod jumps;
+mod pop_outs;
 mod question;
 mod response;
 mod rod_model;
@@ -48,10 +51,13 @@ mod sweep;
 
 pub use crate::load::{Control, Target};
 pub use answer::{Answer, Choice, Reason, SetAside, Value};
+pub use branch_match::BranchMatch;
 pub use elastica_model::ElasticaModel;
 pub use helix_model::HelixModel;
+pub use jumps::{Direction, Jump};
+pub use pop_outs::{PopOut, Stretch};
 pub use question::Question;
-pub use response::{BranchMatch, Direction, Jump, PopOut, Response, Stretch};
+pub use response::Response;
 pub use rod_model::RodModel;
 pub use scene::Spring;
 pub use shape::LoadedShape;

@@ -4,84 +4,14 @@
 //! jumps (hysteresis) under force or displacement control, and self-contact.
 //!
 //! Everything here is computed from the curve itself, so it means the same
-//! for every model.
-
-use core::ops::Range;
+//! for every model. The readings have files of their own: the pop-outs and
+//! stretches (`pop_outs.rs`), stability and jumps (`jumps.rs`), the
+//! branches followed (`branch_match.rs`).
 
 use crate::continuation::Termination;
-use crate::curve::{Fold, FoldKind, ForceExtension, ForcePoint};
+use crate::curve::{Fold, FoldKind, ForceExtension};
 use crate::error::{Error, Result};
 use crate::load::{Control, Target};
-use crate::stability::{self, Stability};
-
-/// Loading (the controlled quantity increases) or unloading.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub enum Direction {
-    /// The controlled quantity increases.
-    Loading,
-    /// The controlled quantity decreases.
-    Unloading,
-}
-
-/// A loop popping out: a maximum-force fold followed by a minimum-force fold.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct PopOut {
-    /// Where the force peaks before the loop pops out.
-    pub max: Fold,
-    /// Where the force bottoms out after it.
-    pub min: Fold,
-}
-
-/// A jump of the spring from the last stable point it can hold to a stable
-/// point with the same value of the controlled quantity (**Breaking**: the
-/// jump now starts at a point, where it used to start at a fold).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct Jump {
-    /// The controlled quantity.
-    pub control: Control,
-    /// Loading or unloading.
-    pub direction: Direction,
-    /// Where the spring leaves the curve: the located fold of the
-    /// controlled quantity where stability is lost at one, else the last
-    /// stable point.
-    pub from: ForcePoint,
-    /// The last stable curve point before it leaves (in the direction of
-    /// travel).
-    pub from_index: usize,
-    /// Where it lands (interpolated on the curve, same controlled value).
-    pub to: ForcePoint,
-    /// The first stable curve point at or past the landing point (in the
-    /// direction of travel).
-    pub to_index: usize,
-}
-
-/// A piece of the curve between pop-outs (from the start or a
-/// minimum-force fold to the next maximum-force fold or the end).
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct Stretch {
-    /// The curve points it covers.
-    pub range: Range<usize>,
-    /// The number of loops on it (the most common count of its points),
-    /// where the model counts loops and no other count is as common.
-    pub loops: Option<u32>,
-}
-
-/// How close a stretch lies to a reference branch (an elastica branch):
-/// distances in the (Δz, F/(2πn)²) plane of the paper's plots.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct BranchMatch {
-    /// The branch's label.
-    pub label: String,
-    /// Root-mean-square distance of the stretch's points from the branch.
-    pub rms_distance: f64,
-    /// Largest distance of a stretch point from the branch.
-    pub max_distance: f64,
-}
 
 /// A model's answer to a pull: the force–extension curve in the order the
 /// model traced it, its folds, the loop count at every point, and why the
@@ -327,236 +257,6 @@ impl Response {
     pub fn loops(&self) -> &[Option<u32>] {
         &self.loops
     }
-
-    /// The pop-outs (type docs), in curve order.
-    #[must_use]
-    pub fn pop_outs(&self) -> Vec<PopOut> {
-        let pairs = self.force_fold_pairs();
-        // the loop counts between consecutive pairs (before the first,
-        // after the last), and the settled count of each
-        let between: Vec<&[Option<u32>]> = (0..=pairs.len())
-            .map(|k| {
-                let from = if k == 0 { 0 } else { pairs[k - 1].1.index + 1 };
-                let until = pairs.get(k).map_or(self.curve.len(), |p| p.0.index + 1);
-                &self.loops[from.min(until)..until]
-            })
-            .collect();
-        let counts: Vec<Option<u32>> = between.iter().map(|b| settled(b)).collect();
-        let mut popped = vec![false; pairs.len()];
-        let mut a = 0;
-        while a < pairs.len() {
-            // a run of pairs with no settled count between them
-            let mut b = a + 1;
-            while b < pairs.len() && counts[b].is_none() {
-                b += 1;
-            }
-            let lost = match (counts[a], counts[b]) {
-                (Some(before), Some(after)) if after <= before => Some((before - after) as usize),
-                _ => None,
-            };
-            match lost {
-                Some(0) if b - a == 1 && unanimous(between[a]) && unanimous(between[b]) => {}
-                Some(k) if k >= 1 && k < b - a => {
-                    let mut widest: Vec<usize> = (a..b).collect();
-                    widest
-                        .sort_by(|&i, &j| hysteresis(&pairs[j]).total_cmp(&hysteresis(&pairs[i])));
-                    for &i in widest.iter().take(k) {
-                        popped[i] = true;
-                    }
-                }
-                _ => popped[a..b].fill(true),
-            }
-            a = b;
-        }
-        pairs
-            .into_iter()
-            .zip(popped)
-            .filter(|(_, p)| *p)
-            .map(|((max, min), _)| PopOut { max, min })
-            .collect()
-    }
-
-    /// Every maximum-force fold paired with the next minimum-force fold.
-    fn force_fold_pairs(&self) -> Vec<(Fold, Fold)> {
-        let mut out = Vec::new();
-        let mut pending: Option<Fold> = None;
-        for fold in &self.folds {
-            match fold.kind {
-                FoldKind::MaxForce => pending = Some(*fold),
-                FoldKind::MinForce => {
-                    if let Some(max) = pending.take() {
-                        out.push((max, *fold));
-                    }
-                }
-                FoldKind::MaxExtension | FoldKind::MinExtension => {}
-            }
-        }
-        out
-    }
-
-    /// The stretches between pop-outs, with their loop counts.
-    #[must_use]
-    pub fn stretches(&self) -> Vec<Stretch> {
-        let mut cuts = vec![0];
-        for p in self.pop_outs() {
-            cuts.push(p.max.index + 1);
-            cuts.push(p.min.index + 1);
-        }
-        cuts.push(self.curve.len());
-        cuts.chunks(2)
-            .filter(|c| c[0] < c[1])
-            .map(|c| Stretch {
-                range: c[0]..c[1],
-                loops: mode(&self.loops[c[0]..c[1]]),
-            })
-            .collect()
-    }
-
-    /// Loops lost from the first stretch to the last (negative if the spring
-    /// gained loops), where both counts are known.
-    #[must_use]
-    pub fn loops_lost(&self) -> Option<i64> {
-        let s = self.stretches();
-        let first = s.first()?.loops?;
-        let last = s.last()?.loops?;
-        Some(i64::from(first) - i64::from(last))
-    }
-
-    /// The index of every curve point under `control`, carried from the
-    /// first point (taken stable: the rest state) through the folds of
-    /// force and extension ([`crate::stability`] explains why that is
-    /// enough, and [`crate::rod::Equilibrium::stability`] is the direct
-    /// test it is checked against).
-    ///
-    /// Labels next to a fold are only as sure as the fold's position: a
-    /// point within the fold's location error of it may carry the label of
-    /// the other side.
-    #[must_use]
-    pub fn stability(&self, control: Control) -> Vec<Stability> {
-        stability::carried(&self.curve, &self.folds, &[], control)
-    }
-
-    /// The jumps a quasi-static test makes under `control`, loading from the
-    /// first point and unloading from the last, read off the stability
-    /// labels ([`Self::stability`]).
-    ///
-    /// Loading follows the curve while the next point is stable and the
-    /// controlled quantity does not fall; the spring then leaves (at the
-    /// fold where stability is lost at one) and lands at the first later
-    /// stable point that regains the value it left at. Unloading does the
-    /// same backwards from the last stable point. A spring that finds no
-    /// stable landing on the computed curve ends its path there. The
-    /// difference between the two paths is the hysteresis.
-    #[must_use]
-    pub fn jumps(&self, control: Control) -> Vec<Jump> {
-        let labels = self.stability(control);
-        let pts = self.curve.points();
-        let n = pts.len();
-        let value = |p: &ForcePoint| match control {
-            Control::Force => p.force,
-            Control::Extension => p.extension,
-        };
-        let stable = |i: usize| labels[i].is_stable();
-        let (max_kind, min_kind) = match control {
-            Control::Force => (FoldKind::MaxForce, FoldKind::MinForce),
-            Control::Extension => (FoldKind::MaxExtension, FoldKind::MinExtension),
-        };
-        let fold_after = |i: usize, kind: FoldKind| {
-            self.folds
-                .iter()
-                .find(|f| f.index == i && f.kind == kind)
-                .map(|f| f.point)
-        };
-        let mut jumps = Vec::new();
-
-        let Some(mut i) = (0..n).find(|&i| stable(i)) else {
-            return jumps;
-        };
-        loop {
-            while i + 1 < n && stable(i + 1) && value(&pts[i + 1]) >= value(&pts[i]) {
-                i += 1;
-            }
-            if i + 1 >= n {
-                break;
-            }
-            let from = fold_after(i, max_kind).unwrap_or(pts[i]);
-            let level = value(&from);
-            let landing = (i + 2..n)
-                .find(|&j| stable(j) && value(&pts[j - 1]) < level && value(&pts[j]) >= level);
-            let Some(j) = landing else { break };
-            jumps.push(Jump {
-                control,
-                direction: Direction::Loading,
-                from,
-                from_index: i,
-                to: interpolate(&pts[j - 1], &pts[j], level, value),
-                to_index: j,
-            });
-            i = j;
-        }
-
-        let Some(mut i) = (0..n).rev().find(|&i| stable(i)) else {
-            return jumps;
-        };
-        loop {
-            while i > 0 && stable(i - 1) && value(&pts[i - 1]) <= value(&pts[i]) {
-                i -= 1;
-            }
-            if i == 0 {
-                break;
-            }
-            let from = fold_after(i - 1, min_kind).unwrap_or(pts[i]);
-            let level = value(&from);
-            let landing = (1..i.saturating_sub(1))
-                .rev()
-                .find(|&j| stable(j - 1) && value(&pts[j]) > level && value(&pts[j - 1]) <= level);
-            let Some(j) = landing else { break };
-            jumps.push(Jump {
-                control,
-                direction: Direction::Unloading,
-                from,
-                from_index: i,
-                to: interpolate(&pts[j - 1], &pts[j], level, value),
-                to_index: j - 1,
-            });
-            i = j - 1;
-        }
-        jumps
-    }
-
-    /// How close each stretch lies to each of `branches`, nearest first.
-    ///
-    /// Distances are measured in the (Δz, F/(2πn)²) plane with the curve's
-    /// own force scale, from each stretch point to the branch polyline.
-    #[must_use]
-    pub fn match_branches(&self, branches: &[ForceExtension]) -> Vec<Vec<BranchMatch>> {
-        let scale = self.curve.force_scale();
-        let pts = self.curve.points();
-        self.stretches()
-            .iter()
-            .map(|stretch| {
-                let mut matches: Vec<BranchMatch> = branches
-                    .iter()
-                    .filter(|b| b.len() >= 2)
-                    .map(|b| {
-                        let (mut sum, mut max) = (0.0, 0.0_f64);
-                        for p in &pts[stretch.range.clone()] {
-                            let d = distance_to_polyline(p, b.points(), scale);
-                            sum += d * d;
-                            max = max.max(d);
-                        }
-                        BranchMatch {
-                            label: b.label().to_owned(),
-                            rms_distance: (sum / stretch.range.len() as f64).sqrt(),
-                            max_distance: max,
-                        }
-                    })
-                    .collect();
-                matches.sort_by(|a, b| a.rms_distance.total_cmp(&b.rms_distance));
-                matches
-            })
-            .collect()
-    }
 }
 
 impl core::fmt::Display for Response {
@@ -577,91 +277,16 @@ impl core::fmt::Display for Response {
     }
 }
 
-/// The most common known value, `None` where none is known or two are
-/// equally common.
-fn mode(values: &[Option<u32>]) -> Option<u32> {
-    let mut sorted: Vec<u32> = values.iter().flatten().copied().collect();
-    sorted.sort_unstable();
-    // (count, how many points have it, whether another count has as many)
-    let mut best: Option<(u32, usize, bool)> = None;
-    for run in sorted.chunk_by(|a, b| a == b) {
-        match best {
-            Some((_, n, _)) if run.len() < n => {}
-            Some((v, n, _)) if run.len() == n => best = Some((v, n, true)),
-            _ => best = Some((run[0], run.len(), false)),
-        }
-    }
-    best.and_then(|(v, _, tied)| (!tied).then_some(v))
-}
-
-/// The loop count that at least three in four of the known counts agree
-/// on, from two known counts up; `None` otherwise. The rod's count
-/// flickers where its shape is three-dimensional (0 and 1 alternating
-/// after the pop-outs of n = 4 at θ0 = 87.35°), and a count that a bare
-/// majority holds there said that a pop-out lost no loop.
-fn settled(values: &[Option<u32>]) -> Option<u32> {
-    let known = values.iter().flatten().count();
-    let v = mode(values)?;
-    let agree = values.iter().flatten().filter(|&&c| c == v).count();
-    (known >= 2 && 4 * agree >= 3 * known).then_some(v)
-}
-
-/// Whether every known count agrees (two known at least).
-fn unanimous(values: &[Option<u32>]) -> bool {
-    let known: Vec<u32> = values.iter().flatten().copied().collect();
-    known.len() >= 2 && known.iter().all(|&c| c == known[0])
-}
-
-/// F_max − F_min of a pair of force folds.
-fn hysteresis((max, min): &(Fold, Fold)) -> f64 {
-    max.point.force - min.point.force
-}
-
-fn interpolate(
-    a: &ForcePoint,
-    b: &ForcePoint,
-    level: f64,
-    value: impl Fn(&ForcePoint) -> f64,
-) -> ForcePoint {
-    let (va, vb) = (value(a), value(b));
-    let t = if vb == va {
-        0.0
-    } else {
-        (level - va) / (vb - va)
-    };
-    ForcePoint {
-        extension: a.extension + t * (b.extension - a.extension),
-        force: a.force + t * (b.force - a.force),
-        parameter: a.parameter + t * (b.parameter - a.parameter),
-    }
-}
-
-fn distance_to_polyline(p: &ForcePoint, line: &[ForcePoint], scale: f64) -> f64 {
-    let (px, py) = (p.extension, p.force / scale);
-    line.windows(2)
-        .map(|w| {
-            let (ax, ay) = (w[0].extension, w[0].force / scale);
-            let (bx, by) = (w[1].extension, w[1].force / scale);
-            let (dx, dy) = (bx - ax, by - ay);
-            let len2 = dx * dx + dy * dy;
-            let t = if len2 > 0.0 {
-                (((px - ax) * dx + (py - ay) * dy) / len2).clamp(0.0, 1.0)
-            } else {
-                0.0
-            };
-            (px - ax - t * dx).hypot(py - ay - t * dy)
-        })
-        .fold(f64::INFINITY, f64::min)
-}
-
+/// Curves for the tests of the response's readings.
 #[cfg(test)]
-mod tests {
+pub(super) mod test_curves {
     use super::*;
+    use crate::curve::ForcePoint;
 
     /// Extension t, force t³ − 3t on t ∈ [−3, 3]: force folds at t = ∓1
     /// (F = ±2); under force control loading jumps from t = −1 to t = 2
     /// ((t − 2)(t + 1)² = 0) and unloading from t = 1 to t = −2.
-    fn s_curve(points: usize) -> Response {
+    pub(in crate::spring) fn s_curve(points: usize) -> Response {
         let mut c = ForceExtension::new("s", "t", crate::ForceScale::of_coils(1).unwrap());
         for i in 0..points {
             let t = -3.0 + 6.0 * i as f64 / (points - 1) as f64;
@@ -678,6 +303,12 @@ mod tests {
             Termination::ParameterValue(18.0),
         )
     }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::test_curves::s_curve;
+    use super::*;
 
     #[test]
     fn folds_of_a_cubic_are_found_at_its_extrema() {
@@ -696,158 +327,6 @@ mod tests {
         assert!(pull.with_loops(same).unwrap().pop_outs().is_empty());
     }
 
-    /// Extension t ∈ [0, 4], force 0.05 t + A_k sin 2πt with amplitude A_k
-    /// on [k, k + 1]: a fold pair in each of the first three periods
-    /// (maximum at k + ¼ … k + 0.32 where 0.05 + 2πA_k cos 2πt = 0,
-    /// minimum near k + ¾, hysteresis ≈ 2A_k), none in the last;
-    /// `loops(t)` the loop count of each point.
-    fn three_pairs(amplitudes: [f64; 3], loops: impl Fn(f64) -> Option<u32>) -> Response {
-        let mut c = ForceExtension::new("w", "t", crate::ForceScale::of_coils(1).unwrap());
-        let n = 801;
-        let mut counts = Vec::new();
-        for i in 0..n {
-            let t = 4.0 * i as f64 / (n - 1) as f64;
-            let a = amplitudes.get(t as usize).copied().unwrap_or(0.0);
-            c.push(ForcePoint {
-                extension: t,
-                force: 0.05 * t + a * (2.0 * core::f64::consts::PI * t).sin(),
-                parameter: t,
-            });
-            counts.push(loops(t));
-        }
-        Response::new(
-            "test",
-            Target::Force(1.0),
-            c,
-            Termination::ParameterValue(4.0),
-        )
-        .with_loops(counts)
-        .unwrap()
-    }
-
-    /// Where the pop-outs of [`three_pairs`] with amplitudes 0.1, 0.02, 0.3
-    /// peak (the extensions of their maximum-force folds).
-    fn popped_at(loops: impl Fn(f64) -> Option<u32>) -> Vec<f64> {
-        three_pairs([0.1, 0.02, 0.3], loops)
-            .pop_outs()
-            .iter()
-            .map(|p| p.max.point.extension)
-            .collect()
-    }
-
-    #[test]
-    fn pairs_with_no_known_count_between_them_pop_as_many_loops_as_are_lost() {
-        // 5 loops before the first pair, 3 after the last, unknown between:
-        // two of the three popped, the two widest (A = 0.1 and 0.3).
-        let outside = |before: u32, after: u32| {
-            move |t: f64| match t {
-                t if t < 0.2 => Some(before),
-                t if t > 2.8 => Some(after),
-                _ => None,
-            }
-        };
-        assert_eq!(
-            three_pairs([0.1, 0.02, 0.3], outside(5, 3))
-                .force_fold_pairs()
-                .len(),
-            3
-        );
-        let at = popped_at(outside(5, 3));
-        assert_eq!(at.len(), 2);
-        assert!(
-            (at[0] - 0.25).abs() < 0.1 && (at[1] - 2.25).abs() < 0.1,
-            "{at:?}"
-        );
-        // no loop lost across the run, more lost than there are pairs
-        // (loops unloop without a fold too), loops gained, or a count
-        // unknown on one side: every pair popped
-        assert_eq!(popped_at(outside(4, 4)).len(), 3);
-        assert_eq!(popped_at(outside(7, 3)).len(), 3);
-        assert_eq!(popped_at(outside(3, 5)).len(), 3);
-        assert_eq!(popped_at(|t: f64| (t < 0.2).then_some(5)).len(), 3);
-        // two counts equally common before the first pair: unknown there
-        let tied = |t: f64| match t {
-            t if t < 0.1 => Some(5),
-            t if t < 0.2 => Some(6),
-            t if t > 2.8 => Some(4),
-            _ => None,
-        };
-        assert_eq!(popped_at(tied).len(), 3);
-        // 5, then 0, then 0 and 1 flickering, then 0 (late in a rod's
-        // pull): a count settled but not unanimous is no evidence that the
-        // pairs on either side kept their loops, so all three popped
-        let flicker = |t: f64| {
-            Some(match t {
-                t if t < 0.8 => 5,
-                t if t < 1.8 => u32::from(t > 1.7),
-                _ => 0,
-            })
-        };
-        assert_eq!(popped_at(flicker).len(), 3);
-        // known counts between the pairs decide each alone: 5, 5, 4, 3
-        let known = |t: f64| {
-            Some(match t {
-                t if t < 1.8 => 5,
-                t if t < 2.8 => 4,
-                _ => 3,
-            })
-        };
-        let at = popped_at(known);
-        assert_eq!(at.len(), 2);
-        assert!(
-            (at[0] - 1.25).abs() < 0.1 && (at[1] - 2.25).abs() < 0.1,
-            "{at:?}"
-        );
-    }
-
-    #[test]
-    fn a_settled_count_is_held_by_three_in_four_known_counts() {
-        let (a, b, u) = (Some(0), Some(1), None);
-        assert_eq!(settled(&[a, a, a, b, u, u]), Some(0));
-        // a bare majority (four of seven) is the mode, not settled
-        assert_eq!(mode(&[a, a, a, a, b, b, b]), Some(0));
-        assert_eq!(settled(&[a, a, a, a, b, b, b]), None);
-        // one known count is no evidence; equally common counts no mode
-        assert_eq!(settled(&[u, a, u]), None);
-        assert_eq!(mode(&[a, b]), None);
-        assert_eq!(mode(&[u, u]), None);
-    }
-
-    #[test]
-    fn force_control_jumps_over_the_unstable_part_both_ways() {
-        let pull = s_curve(601);
-        let jumps = pull.jumps(Control::Force);
-        assert_eq!(jumps.len(), 2);
-        let load = jumps
-            .iter()
-            .find(|j| j.direction == Direction::Loading)
-            .unwrap();
-        let unload = jumps
-            .iter()
-            .find(|j| j.direction == Direction::Unloading)
-            .unwrap();
-        // Linear interpolation between points 0.01 apart on a curve with
-        // F″ = 12 at the landing: error ≤ h²·F″/8 / F′ ≈ 2e-5.
-        assert!((load.to.extension - 2.0).abs() < 1e-4, "{load:?}");
-        assert!((unload.to.extension + 2.0).abs() < 1e-4, "{unload:?}");
-        assert!(pull.jumps(Control::Extension).is_empty());
-    }
-
-    #[test]
-    fn stretches_split_at_pop_outs_and_carry_loop_counts() {
-        let pull = s_curve(601);
-        let n = pull.curve().len();
-        let loops: Vec<_> = (0..n).map(|i| Some(if i < 300 { 2 } else { 1 })).collect();
-        let pull = pull.with_loops(loops).unwrap();
-        assert_eq!(pull.pop_outs().len(), 1);
-        assert_eq!(pull.loops_lost(), Some(1));
-        let stretches = pull.stretches();
-        assert_eq!(stretches.len(), 2);
-        assert_eq!(stretches[0].loops, Some(2));
-        assert_eq!(stretches[1].loops, Some(1));
-        assert!(stretches[0].range.end <= stretches[1].range.start);
-    }
-
     #[test]
     fn fold_indices_and_loop_counts_must_fit_the_curve() {
         let pull = s_curve(61);
@@ -861,12 +340,5 @@ mod tests {
             pull.with_loops(vec![Some(1); 60]),
             Err(Error::LengthMismatch { .. })
         ));
-    }
-
-    #[test]
-    fn a_stretch_on_a_branch_is_at_distance_zero_from_it() {
-        let pull = s_curve(61);
-        let near = pull.match_branches(&[pull.curve().clone()]);
-        assert!(near.iter().all(|m| m[0].max_distance == 0.0));
     }
 }

@@ -38,180 +38,23 @@
 //! keep its factorisation. The target is a stop of the continuation: the
 //! last point is located on it.
 
-use std::time::{Duration, Instant};
+mod recorder;
+mod run;
+mod start;
 
-use super::{Equilibrium, Rod};
+pub use run::PullRun;
+pub use start::Start;
+
+use recorder::Recorder;
+use start::relaxed_rest;
+
+use std::time::Instant;
+
+use super::Rod;
 use crate::bvp::{Collocation, Mesh, Solution};
-use crate::continuation::{
-    Continuation, ErrorEstimate, Observer, Output, Point, PointKind, Steps, Termination, drive_into,
-};
-use crate::curve::{Curvature, Fold, FoldKind, ForceExtension, ForcePoint, Slope};
+use crate::continuation::{Continuation, Observer, Output, drive_into};
 use crate::error::{Error, Result};
 use crate::load::{Control, Target};
-
-/// The result of a pull: the curve in continuation order, its located folds,
-/// the loop count at every point, and why it ended. A run that stops early
-/// keeps every point.
-#[derive(Debug, Clone)]
-pub struct PullRun {
-    rod: Rod,
-    target: Target,
-    curve: ForceExtension,
-    folds: Vec<Fold>,
-    loops: Vec<Option<u32>>,
-    termination: Termination,
-    steps: usize,
-    rejected: usize,
-    newton_iterations: u64,
-    elapsed: Duration,
-    tolerance: f64,
-    estimate: ErrorEstimate,
-    points_per_interval: usize,
-}
-
-impl PullRun {
-    /// The tolerance the pull was asked for.
-    #[must_use]
-    pub fn tolerance(&self) -> f64 {
-        self.tolerance
-    }
-
-    /// The errors the run measured, in the plane (Δz, F/((2πn)²B)) of the
-    /// paper's plots ([`ErrorEstimate`]): of the points against the halved
-    /// mesh, of the located folds, and of the quintic Hermite interpolant
-    /// between points (the cubic at tolerances of 1e-3 and looser;
-    /// [`ForceExtension::force_at`]).
-    #[must_use]
-    pub fn estimate(&self) -> ErrorEstimate {
-        self.estimate
-    }
-
-    /// The collocation points per interval m the run used.
-    #[must_use]
-    pub fn points_per_interval(&self) -> usize {
-        self.points_per_interval
-    }
-
-    /// The rod that was pulled (with the control of its target).
-    #[must_use]
-    pub fn rod(&self) -> &Rod {
-        &self.rod
-    }
-
-    /// The target of the pull.
-    #[must_use]
-    pub fn target(&self) -> Target {
-        self.target
-    }
-
-    /// The force–extension curve (parameter: arclength), from the rest state
-    /// to the last point; located folds are in [`Self::folds`], not points.
-    #[must_use]
-    pub fn curve(&self) -> &ForceExtension {
-        &self.curve
-    }
-
-    /// The located folds of the controlled load, in order; each fold's
-    /// `index` is the last curve point before it.
-    #[must_use]
-    pub fn folds(&self) -> &[Fold] {
-        &self.folds
-    }
-
-    /// The loop count of every curve point ([`Equilibrium::loops`]).
-    #[must_use]
-    pub fn loops(&self) -> &[Option<u32>] {
-        &self.loops
-    }
-
-    /// Why the run ended: [`Termination::ParameterValue`] when it reached
-    /// its target.
-    #[must_use]
-    pub fn termination(&self) -> &Termination {
-        &self.termination
-    }
-
-    /// Whether the last point is the target.
-    #[must_use]
-    pub fn reached_target(&self) -> bool {
-        matches!(self.termination, Termination::ParameterValue(_))
-    }
-
-    /// Whether the run's estimated errors (of its folds and of its curve,
-    /// [`Self::estimate`]) are within the tolerance it was asked for. A run
-    /// can reach its target without meeting it: a fixed mesh too coarse
-    /// for the tolerance, or a mesh that reached its interval limit (the
-    /// estimate is then large, or ∞ where the check against the halved mesh
-    /// failed).
-    #[must_use]
-    pub fn meets_tolerance(&self) -> bool {
-        let e = self.estimate;
-        (e.located + e.pinned).max(e.curve()) <= self.tolerance
-    }
-
-    /// Accepted continuation steps.
-    #[must_use]
-    pub fn steps(&self) -> usize {
-        self.steps
-    }
-
-    /// Rejected (retried) steps.
-    #[must_use]
-    pub fn rejected(&self) -> usize {
-        self.rejected
-    }
-
-    /// Newton iterations: the start and every corrector (rejected steps and
-    /// fold location included).
-    #[must_use]
-    pub fn newton_iterations(&self) -> u64 {
-        self.newton_iterations
-    }
-
-    /// Wall-clock time of the run.
-    #[must_use]
-    pub fn elapsed(&self) -> Duration {
-        self.elapsed
-    }
-}
-
-impl core::fmt::Display for PullRun {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        writeln!(
-            f,
-            "pull of {} to {} (tolerance {:.0e}): {} points, {} folds, {} steps ({} rejected), {:.2?}: {}\n  {}, m = {}",
-            self.rod,
-            self.target,
-            self.tolerance,
-            self.curve.len(),
-            self.folds.len(),
-            self.steps,
-            self.rejected,
-            self.elapsed,
-            self.termination,
-            self.estimate,
-            self.points_per_interval
-        )?;
-        if !self.meets_tolerance() {
-            writeln!(
-                f,
-                "  the tolerance {:.0e} is NOT met: estimated error {:.1e}",
-                self.tolerance,
-                (self.estimate.located + self.estimate.pinned).max(self.estimate.curve())
-            )?;
-        }
-        for fold in &self.folds {
-            writeln!(
-                f,
-                "  {} at Δz = {:.6}, F/((2πn)²B) = {:.6}",
-                fold.kind,
-                fold.point.extension,
-                fold.point.force_scaled(self.curve.scale())
-            )?;
-        }
-        Ok(())
-    }
-}
 
 /// Pulls a [`Rod`] from its rest state to a [`Target`] by pseudo-arclength
 /// continuation (module docs: [`crate::rod`]).
@@ -660,7 +503,7 @@ impl Pull {
     /// Runs the pull to its target, calling `observer`'s hooks as
     /// [`Continuation::run`] does (the same driver): `start` at the rest
     /// state, `point` at every point (located folds are points of kind
-    /// [`PointKind::Fold`]), `fold` at each located fold, `step_rejected`,
+    /// [`PointKind::Fold`](crate::continuation::PointKind::Fold)), `fold` at each located fold, `step_rejected`,
     /// `finish` with the termination. The pull keeps the curve, not the
     /// solutions.
     ///
@@ -697,151 +540,4 @@ impl Pull {
             points_per_interval: self.points_per_interval(),
         })
     }
-}
-
-/// A pull ready to step: the rest state solved and the continuation set
-/// (from [`Pull::start`]). [`Start::steps`] iterates over the continuation's
-/// points, the rest state first, as [`Pull::run`] does.
-#[derive(Debug, Clone)]
-pub struct Start {
-    rod: Rod,
-    target: Target,
-    continuation: Continuation,
-    rest: Solution,
-}
-
-impl Start {
-    /// The rest state.
-    #[must_use]
-    pub fn rest(&self) -> &Solution {
-        &self.rest
-    }
-
-    /// The continuation settings of the pull.
-    #[must_use]
-    pub fn continuation(&self) -> &Continuation {
-        &self.continuation
-    }
-
-    /// The continuation's step-by-step iterator from the rest state. Turn
-    /// a point into the rod's outputs with [`Equilibrium::new`]`(rod,
-    /// point.solution().clone())`.
-    ///
-    /// # Errors
-    /// An error of the first tangent computation.
-    pub fn steps(&self) -> Result<Steps<'_, Rod>> {
-        self.continuation.steps(&self.rod, &self.rest)
-    }
-}
-
-/// Turns continuation points into the curve, the folds and the loop counts.
-struct Recorder {
-    rod: Rod,
-    curve: ForceExtension,
-    folds: Vec<Fold>,
-    loops: Vec<Option<u32>>,
-    locate_folds: bool,
-    /// dλ/ds at the last curve point.
-    last_dl: f64,
-    /// The pull's tolerance: the slack of |Δz| ≤ 1 (robust10b).
-    tolerance: f64,
-}
-
-impl Recorder {
-    fn new(start: &Start, locate_folds: bool, tolerance: f64) -> Self {
-        Self {
-            tolerance,
-            rod: start.rod,
-            curve: ForceExtension::new("rod", "arclength", start.rod.scale()),
-            folds: Vec::new(),
-            loops: Vec::new(),
-            locate_folds,
-            last_dl: 0.0,
-        }
-    }
-
-    fn record(&mut self, p: &Point) -> Result<()> {
-        let eq = Equilibrium::new(self.rod, p.solution().clone())?;
-        // (robust10b) |Δz| > 1 beyond the tolerance is no rod: the run ends
-        // `Failed` with `NotARod` instead of keeping the point
-        if eq.extension().abs() > 1.0 + self.tolerance {
-            return Err(Error::NotARod {
-                extension: eq.extension(),
-                intervals: p.solution().mesh().intervals() as u64,
-            });
-        }
-        let dl = p.dparameter_ds();
-        let at = ForcePoint {
-            extension: eq.extension(),
-            force: eq.force(),
-            parameter: p.arclength(),
-        };
-        let located = p.kind() == PointKind::Fold;
-        let detected = !self.locate_folds && self.last_dl * dl < 0.0;
-        if located || detected {
-            let kind = match (self.rod.control(), self.last_dl > 0.0) {
-                (Control::Force, true) => FoldKind::MaxForce,
-                (Control::Force, false) => FoldKind::MinForce,
-                (Control::Extension, true) => FoldKind::MaxExtension,
-                (Control::Extension, false) => FoldKind::MinExtension,
-            };
-            let index = self.curve.len().saturating_sub(1);
-            let point = if located {
-                at
-            } else {
-                self.curve.points()[index]
-            };
-            self.folds.push(Fold { kind, index, point });
-        }
-        if !located {
-            let [dl, dg] = p.diagram_slope();
-            let scale = self.curve.force_scale();
-            // (Δz, F) from the diagram's (λ, g): (F/scale, Δz) under force
-            // control, (Δz, F_z/scale) under extension control
-            let control = self.rod.control();
-            let physical = |[l, g]: [f64; 2]| match control {
-                Control::Force => (g, l * scale),
-                Control::Extension => (l, g * scale),
-            };
-            let (extension, force) = physical([dl, dg]);
-            let slope = Slope { extension, force };
-            match p.diagram_curvature() {
-                Some(c) => {
-                    let (extension, force) = physical(c);
-                    self.curve
-                        .push_with_curvature(at, slope, Curvature { extension, force });
-                }
-                None => self.curve.push_with_slope(at, slope),
-            }
-            self.loops.push(eq.loops());
-            self.last_dl = dl;
-        }
-        Ok(())
-    }
-}
-
-/// Steps of the homotopy from the helix's intrinsic strains to custom ones.
-const RELAX_STEPS: u32 = 8;
-
-/// The rest state (F = 0) under force control: the unstressed helix, or
-/// for custom intrinsic strains u0 the equilibrium reached from it by
-/// moving u0 from the helix's strains to the custom ones in
-/// [`RELAX_STEPS`] equal steps, each solved by Newton from the last.
-fn relaxed_rest(solver: &Collocation, rod: &Rod, p0: &[f64; 3]) -> Result<Solution> {
-    let free = rod.with_control(Control::Force);
-    let helical = Rod::helical_strains(rod.coils(), rod.theta0());
-    let target = rod.intrinsic_strains();
-    let mut rest = solver.solve(
-        &free.with_intrinsic_strains(helical)?,
-        |s: f64| rod.unstressed(s),
-        p0,
-    )?;
-    if !rod.is_helical() {
-        for i in 1..=RELAX_STEPS {
-            let t = f64::from(i) / f64::from(RELAX_STEPS);
-            let step = free.with_intrinsic_strains(helical + (target - helical) * t)?;
-            rest = solver.solve(&step, &rest, p0)?;
-        }
-    }
-    Ok(rest)
 }
