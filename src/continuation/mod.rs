@@ -87,6 +87,7 @@ mod diagram;
 mod difference;
 mod fold_curve;
 mod fold_extended;
+mod fold_point;
 mod hermite;
 mod locate;
 mod mesh_error;
@@ -102,8 +103,9 @@ mod termination;
 mod tolerance;
 
 pub use diagram::Output;
-pub use fold_curve::{FoldContinuation, FoldCurve, FoldObserver, FoldPoint, FoldPointKind};
+pub use fold_curve::FoldContinuation;
 pub use fold_extended::Extended as FoldProblem;
+pub use fold_point::{FoldCurve, FoldObserver, FoldPoint, FoldPointKind};
 pub use mesh_error::ErrorEstimate;
 pub use observer::{Every, Observer};
 pub use point::{Point, PointKind};
