@@ -43,7 +43,7 @@ pub fn run(coils: u32, diagram: &PhaseDiagram) -> Fallible<()> {
         let read = |deg: f64| diagram.pop_outs(deg.to_radians(), a, nu).ok();
         let count = read(t);
         let near_line = count != read(t - 0.1) || count != read((t + 0.1).min(89.999));
-        let response = super::pulled(coils, (t, a, nu), FORCE)?;
+        let response = super::pulls::pulled(coils, (t, a, nu), FORCE)?;
         let pulled = response.pop_outs().len();
         let reached = response.reached_target();
         let shown = count.map_or("unknown".to_string(), |c| c.to_string());
