@@ -27,8 +27,7 @@ const A_MAX: f64 = 100.0;
 const NU_MIN: f64 = -0.9;
 const NU_MAX: f64 = 0.49;
 /// The other ν of the reading grid (lines at fixed ν).
-const NU_GRID: [f64; 11] =
-    [-0.9, -0.6, -0.4, -0.2, -0.1, 0.0, 0.1, 0.15, 0.2, 0.3, 0.45];
+const NU_GRID: [f64; 11] = [-0.9, -0.6, -0.4, -0.2, -0.1, 0.0, 0.1, 0.15, 0.2, 0.3, 0.45];
 pub(crate) const HALF_PI: f64 = core::f64::consts::FRAC_PI_2;
 /// Scenes (coils, θ0 in degrees, A/B; ν = 0.05) where loops pop out that
 /// do not pop out at the reference spring: n = 8 has 3 pop-outs there and

@@ -56,7 +56,11 @@
 //! `--cross-check` pulls a coarse grid over both planes (θ0 86–89.8°, A/B
 //! 1–100 at ν = 0.05, ν −0.2–0.3 at A/B = 10) to F/((2πn)²B) = 3 and
 //! prints the diagram's count beside each pull's (`cross_check.rs`): the
-//! full-grid cross-check, which fails where a pull sees more.
+//! full-grid cross-check, which fails where a pull sees more. Where a pull
+//! sees fewer, the reference's pop-outs are carried to the scene and a
+//! line `beyond … carried_max=<F;…> vanished=<k> accounted=<yes|partly|no>`
+//! says whether those that peak above the pull's force make up the
+//! difference.
 //!
 //! `--scene THETA0_DEG,A_OVER_B,NU` (repeatable) prints one line per scene,
 //! `scene theta0=<deg> a_over_b=<x> nu=<x> pop_outs=<count>`, read off the

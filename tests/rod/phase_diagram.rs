@@ -556,6 +556,67 @@ fn a_fold_carried_to_another_spring_is_the_fold_a_pull_finds_there() {
 /// See `a_fold_carried_to_another_spring_is_the_fold_a_pull_finds_there`.
 const CARRIED_FOLD: f64 = 2e-6;
 
+/// The diagram counts pop-outs at any force, a pull those below its load:
+/// where they differ, the missing pop-out peaks above the load. n = 2 at
+/// (89.8°, A/B = 30, ν = 0.05) lies inside pop-out 1's region (the
+/// diagram counts 1, 0.1° either side too), but a pull to F/((2πn)²B) = 3
+/// sees none (`phase_diagram --cross-check`): carried from the reference
+/// spring, its maximum-force fold is there above 3, and a pull past that
+/// force meets it at that force.
+#[test]
+fn a_pop_out_a_pull_misses_peaks_above_its_load_and_a_longer_pull_meets_it() {
+    let d =
+        PhaseDiagram::from_csv(2, include_str!("../../docs/data/phase_diagram_n2.csv")).unwrap();
+    let (t, a, nu) = (89.8, 30.0, 0.05);
+    assert_eq!(predicted_away_from_lines(&d, t, a, nu), 1);
+    let rod = Rod::new(
+        2,
+        89.8_f64.to_radians(),
+        Stiffness::nikolai(10.0, 0.05).unwrap(),
+    )
+    .unwrap();
+    let family = NikolaiRod::new(rod, 0.05).unwrap();
+    let search = CuspSearch::new();
+    let pops = search.pop_outs(&family, 3.0).unwrap();
+    assert_eq!(
+        pops.len(),
+        1,
+        "the reference spring of n = 2 loses its loop"
+    );
+    let (_, carried) = search
+        .carry(&family, &pops[0][0], (t.to_radians(), a, nu))
+        .unwrap();
+    let Followed::Reached(fold) = carried else {
+        panic!("pop-out 1 exists at the scene (the diagram's count): {carried:?}");
+    };
+    let f = fold.parameters()[NikolaiRod::FORCE_SCALED];
+    assert!(f > 3.0, "carried maximum force {f}");
+    assert_eq!(pulled_pop_outs_on(2, t, a, nu, 48, 3.0), 0);
+    let spring = Spring::from_degrees(2, t, Stiffness::nikolai(a, nu).unwrap()).unwrap();
+    let longer = RodModel::default().pull(&spring, f + 1.0).unwrap();
+    assert!(longer.reached_target(), "{}", longer.termination());
+    let scale = longer.curve().scale();
+    let peaks: Vec<f64> = longer
+        .pop_outs()
+        .iter()
+        .map(|p| p.max.point.force_scaled(scale))
+        .collect();
+    assert_eq!(peaks.len(), 1, "{peaks:?}");
+    assert!(
+        (peaks[0] - f).abs() < CARRIED_HIGH_FOLD,
+        "carried {f}, pulled {peaks:?}"
+    );
+}
+
+/// The carried fold (48 uniform intervals, m = 4, as in
+/// `a_fold_carried_to_another_spring_is_the_fold_a_pull_finds_there`)
+/// against the adaptive pull's (tolerance 1e-6) at F/((2πn)²B) ≈ 3.44:
+/// the pull's tolerance and the uniform mesh's error, which grows with the
+/// force as the loop tightens (n = 4 on 12 intervals per coil at
+/// (87°, 10, −0.3): 2e-4 at 3.39, docs/ACCURACY.md), here on 24 per coil;
+/// measured together 2.2e-8.
+const CARRIED_HIGH_FOLD: f64 = 1e-5;
+
 /// The path of a carry matters: taken one parameter at a time (θ0 first,
 /// at the reference's ν = 0.05) pop-out 1 meets its cusp at θ0 = 87.485°
 /// on the way to (87°, 10, −0.3), although the scene has it (the pull
