@@ -59,6 +59,7 @@ mod common;
 mod helix_bound;
 #[path = "../tests/spring/measure.rs"]
 mod measure;
+use measure::{CRAWL_SPAN, CRAWL_STEPS, Crawl};
 #[path = "models/plot.rs"]
 mod plot;
 #[path = "models/shapes.rs"]
@@ -252,46 +253,6 @@ fn adaptive_reference(spring: &Spring, max_force: f64, tol: f64) -> Option<Respo
 /// The tightest tolerance of [`adaptive_reference`]: below 1e-7 the
 /// adaptive rod stalls where loops slide (docs/ROADMAP.md).
 const FALLBACK_TOLERANCE: f64 = 1e-7;
-
-/// Steps of the converged reference that may stay within [`CRAWL_SPAN`]
-/// of their force before it is given up: on the grid a whole reference
-/// to F/((2πn)²B) = 1 took 83–309 steps; where loops slide along the rod
-/// (negative ν, high force) its fixed mesh gives spurious folds and then
-/// steps of 1e-7 relative, 13 000 of them in 8 minutes at (7, 88°, 5,
-/// −0.3) before Newton failed.
-const CRAWL_STEPS: usize = 1000;
-
-/// The relative span of force that [`CRAWL_STEPS`] steps must exceed.
-const CRAWL_SPAN: f64 = 1e-3;
-
-/// Stops a pull whose last [`CRAWL_STEPS`] points lie within a relative
-/// [`CRAWL_SPAN`] of their largest force.
-#[derive(Default)]
-struct Crawl {
-    recent: std::collections::VecDeque<f64>,
-    stalled_at: Option<f64>,
-}
-
-impl Crawl {
-    fn see(&mut self, point: &hockle::continuation::Point) -> std::ops::ControlFlow<()> {
-        let f = point.parameter();
-        self.recent.push_back(f);
-        if self.recent.len() > CRAWL_STEPS {
-            self.recent.pop_front();
-            let (lo, hi) = self
-                .recent
-                .iter()
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
-                    (lo.min(*v), hi.max(*v))
-                });
-            if hi - lo <= CRAWL_SPAN * hi.abs() {
-                self.stalled_at = Some(f);
-                return std::ops::ControlFlow::Break(());
-            }
-        }
-        std::ops::ControlFlow::Continue(())
-    }
-}
 
 /// `--scene … --shape-at F`: the shape at F/((2πn)²B) = F, its true
 /// error the largest distance between centrelines (up to a turn about the

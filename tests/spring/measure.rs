@@ -34,6 +34,49 @@ pub struct Drawn<'a> {
     pieces: Vec<Piece>,
 }
 
+/// Steps of a converged reference that may stay within [`CRAWL_SPAN`] of
+/// their force before it is given up: on the grid a whole reference to
+/// F/((2πn)²B) = 1 took 83–309 steps; where loops slide along the rod
+/// (negative ν, high force) its fixed mesh gives spurious folds and then
+/// steps of 1e-7 relative, 13 000 of them in 8 minutes at (7, 88°, 5,
+/// −0.3) before Newton failed.
+pub const CRAWL_STEPS: usize = 1000;
+
+/// The relative span of force that [`CRAWL_STEPS`] steps must exceed.
+pub const CRAWL_SPAN: f64 = 1e-3;
+
+/// Stops a pull whose last [`CRAWL_STEPS`] points lie within a relative
+/// [`CRAWL_SPAN`] of their largest force (an observer's `point` hook,
+/// [`Crawl::see`]).
+#[derive(Default)]
+pub struct Crawl {
+    recent: std::collections::VecDeque<f64>,
+    /// The force where the pull was given up, if it was.
+    pub stalled_at: Option<f64>,
+}
+
+impl Crawl {
+    /// Sees a point: `Break` once the pull crawls.
+    pub fn see(&mut self, point: &Point) -> ControlFlow<()> {
+        let f = point.parameter();
+        self.recent.push_back(f);
+        if self.recent.len() > CRAWL_STEPS {
+            self.recent.pop_front();
+            let (lo, hi) = self
+                .recent
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                    (lo.min(*v), hi.max(*v))
+                });
+            if hi - lo <= CRAWL_SPAN * hi.abs() {
+                self.stalled_at = Some(f);
+                return ControlFlow::Break(());
+            }
+        }
+        ControlFlow::Continue(())
+    }
+}
+
 /// The pieces of a response's curve with its located folds (module docs).
 pub fn drawn(response: &Response) -> Drawn<'_> {
     let curve = response.curve();
@@ -219,12 +262,19 @@ pub fn try_shape_reference(
         .map_err(|e| e.to_string())?;
     let rod = *driver.rod();
     let mut last: Option<Solution> = None;
+    let mut crawl = Crawl::default();
     let run = driver
         .run(|p: &Point| {
             last = Some(p.solution().clone());
-            ControlFlow::<()>::Continue(())
+            crawl.see(p)
         })
         .map_err(|e| e.to_string())?;
+    if let Some(at) = crawl.stalled_at {
+        return Err(format!(
+            "the reference of {spring} crawled ({CRAWL_STEPS} steps within {CRAWL_SPAN:e} of its \
+             force near F = {at:.6e}; sliding loops, docs/ROADMAP.md)"
+        ));
+    }
     if !run.reached_target() {
         return Err(format!(
             "the reference of {spring} stopped before {at}: {}",
