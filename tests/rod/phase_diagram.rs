@@ -474,8 +474,14 @@ fn direct_pulls_see_the_n7_pop_outs_the_diagram_predicts() {
 /// The paper's spring as a `NikolaiRod`, the default search, and its
 /// three pop-outs (pulled to F/((2πn)²B) = 3 on the search's mesh).
 fn paper_pop_outs() -> (NikolaiRod, CuspSearch, Vec<[hockle::bvp::Solution; 2]>) {
+    reference_pop_outs(4)
+}
+
+/// [`paper_pop_outs`] for n coils: the diagrams' reference spring
+/// (θ0 = 89.8°, A/B = 10, ν = 0.05).
+fn reference_pop_outs(n: u32) -> (NikolaiRod, CuspSearch, Vec<[hockle::bvp::Solution; 2]>) {
     let rod = Rod::new(
-        4,
+        n,
         89.8_f64.to_radians(),
         Stiffness::nikolai(10.0, 0.05).unwrap(),
     )
@@ -569,15 +575,7 @@ fn a_pop_out_a_pull_misses_peaks_above_its_load_and_a_longer_pull_meets_it() {
         PhaseDiagram::from_csv(2, include_str!("../../docs/data/phase_diagram_n2.csv")).unwrap();
     let (t, a, nu) = (89.8, 30.0, 0.05);
     assert_eq!(predicted_away_from_lines(&d, t, a, nu), 1);
-    let rod = Rod::new(
-        2,
-        89.8_f64.to_radians(),
-        Stiffness::nikolai(10.0, 0.05).unwrap(),
-    )
-    .unwrap();
-    let family = NikolaiRod::new(rod, 0.05).unwrap();
-    let search = CuspSearch::new();
-    let pops = search.pop_outs(&family, 3.0).unwrap();
+    let (family, search, pops) = reference_pop_outs(2);
     assert_eq!(
         pops.len(),
         1,
