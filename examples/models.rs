@@ -235,7 +235,13 @@ fn adaptive_reference(spring: &Spring, max_force: f64, tol: f64) -> Option<Respo
         })
         .inspect_err(|e| eprintln!("models: no adaptive reference either: {e}"))
         .ok()
-        .filter(|r| r.reached_target())?;
+        .filter(|r| r.reached_target());
+    if let Some(at) = crawl.stalled_at {
+        eprintln!(
+            "models: the adaptive reference at tolerance {fine:e} crawled too, near F = {at:.6e}"
+        );
+    }
+    let reference = reference?;
     let estimate = reference.estimated_error().unwrap_or(f64::INFINITY);
     if estimate > 0.1 * tol {
         eprintln!(
