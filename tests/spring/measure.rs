@@ -47,12 +47,13 @@ pub const CRAWL_STEPS: usize = 1000;
 pub const CRAWL_SPAN: f64 = 1e-3;
 
 /// Stops a pull whose last [`CRAWL_STEPS`] points lie within a relative
-/// [`CRAWL_SPAN`] of their largest force (an observer's `point` hook,
+/// [`CRAWL_SPAN`] of their largest load (the continuation parameter: the
+/// force, or Δz under extension control; an observer's `point` hook,
 /// [`Crawl::see`]).
 #[derive(Default)]
 pub struct Crawl {
     recent: std::collections::VecDeque<f64>,
-    /// The force where the pull was given up, if it was.
+    /// The load where the pull was given up, if it was.
     pub stalled_at: Option<f64>,
 }
 
