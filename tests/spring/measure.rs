@@ -274,7 +274,7 @@ pub fn try_shape_reference(
     if let Some(at) = crawl.stalled_at {
         return Err(format!(
             "the reference of {spring} crawled ({CRAWL_STEPS} steps within {CRAWL_SPAN:e} of its \
-             force near F = {at:.6e}; sliding loops, docs/ROADMAP.md)"
+             load near {at:.6e}; sliding loops, docs/ROADMAP.md)"
         ));
     }
     if !run.reached_target() {
