@@ -25,6 +25,40 @@ use crate::linalg::Det;
 /// (1.5e-9 after the quintic dense output).
 pub(super) const STUCK_FLOOR: f64 = 100.0;
 
+/// Beyond [`STUCK_FLOOR`]: a corrector whose Newton stalls at the shortest
+/// step, where the run would otherwise fail, at a relative correction of at
+/// most this (a rounding floor of a system whose condition
+/// number reaches ~1e10) keeps its point when that correction would move
+/// the point across the branch in the diagram's plane by at most
+/// [`STALLED_ACROSS`] of the run's tolerance; that distance is added to the
+/// run's estimate ([`ErrorEstimate::stalled`]). A floor, not a multiple of
+/// the Newton tolerance: at tol 1e-4 (Newton's 1e-8) ten thousand times it
+/// let a pull to F/((2πn)²B) = 1e10 keep a point with Δz > 1 near 1e9.
+/// Measured (29 Nov, tol 1e-6, so a Newton tolerance of 1e-10): the rod with
+/// A/B = 100 at ν = 0.05 past its last pop-outs, the loops left in the rod
+/// under tension nearly free to slide (n = 6, 8 at θ0 = 89.5°, F/((2πn)²B)
+/// ≈ 7.15; n = 7 at 89.5° and 89.8°), stalls at corrections of 1.7e-8 …
+/// 5e-7, which would move the point 1.2e-7 … 5e-7 along the curve and at
+/// most 3.8e-10 across it; the pulls to F/((2πn)²B) = 30 failed there. With
+/// this rule n = 8 at 89.5° reaches 30 with its seven pop-outs (its
+/// estimate, 2.1e-4, says the tolerance is not met); n = 6 at 89.5° fails a
+/// little further on, where Newton diverges at the shortest step. Kept at
+/// every step length (tried), such points let n = 6 and 8 meet 1e-6 but
+/// the paper's spring at ν = −0.5 slide its loops into the halved-mesh
+/// checks (estimate 1e-4 by step 136, not ≤ 4e-6) and n = 16 crawl past
+/// its folds for over 15 minutes: only where the run would otherwise fail.
+///
+/// [`ErrorEstimate::stalled`]: super::ErrorEstimate::stalled
+pub(super) const STALLED_FLOOR: f64 = 1e-6;
+
+/// The largest distance across the branch in the diagram's plane, as a
+/// fraction of the run's tolerance, that the correction left where Newton
+/// stalled between [`STUCK_FLOOR`] times its tolerance and
+/// [`STALLED_FLOOR`] may move the point, for the point to be kept: what the
+/// tolerance can spare beside the mesh and interpolation errors, as for
+/// [`PINNED_ACROSS`].
+pub(super) const STALLED_ACROSS: f64 = 0.25;
+
 /// With a tolerance, the most a corrected point pinned along near-null
 /// modes ([`crate::bvp::newton_pinned`]) may lie across the branch from
 /// the equilibrium its modes would slide to, to first order, as a fraction
@@ -271,7 +305,7 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         if self.cont.tolerance.is_none() {
             return Err(failure);
         }
-        if let Some(stats) = self.stuck(&failure) {
+        if let Some(stats) = self.stuck(&failure, x) {
             return Ok(stats);
         }
         if !self.cont.pin_slides || !stalled(&failure) {
@@ -284,7 +318,7 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
             match newton(&mut self.sys, x, self.opts, false) {
                 Ok(stats) => return Ok(stats),
                 Err(e) => {
-                    if let Some(stats) = self.stuck(&e) {
+                    if let Some(stats) = self.stuck(&e, x) {
                         return Ok(stats);
                     }
                     failure = e;
@@ -302,23 +336,54 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
     }
 
     /// (robust10c) The statistics of a Newton that failed stuck at its
-    /// rounding floor, within [`STUCK_FLOOR`] times its tolerance: its
-    /// point is kept, counted as the most iterations (so the next step is
-    /// shorter).
-    fn stuck(&self, e: &Error) -> Option<NewtonStats> {
-        match e {
-            Error::NewtonDiverged { correction, .. }
-            | Error::NewtonNotConverged { correction, .. }
-                if *correction <= STUCK_FLOOR * self.opts.tol =>
-            {
-                Some(NewtonStats {
-                    iterations: self.opts.max_iter,
-                    jacobians: 1,
-                    correction: *correction,
-                })
-            }
-            _ => None,
+    /// rounding floor at `x`, within [`STUCK_FLOOR`] times its tolerance,
+    /// or, at the shortest step, within [`STALLED_FLOOR`] where the
+    /// correction left moves the diagram's point across the branch by at
+    /// most [`STALLED_ACROSS`] of the run's tolerance (that distance joins
+    /// the estimate): its point is kept, counted as the most iterations (so
+    /// the next step is shorter).
+    fn stuck(&mut self, e: &Error, x: &State) -> Option<NewtonStats> {
+        let (Error::NewtonDiverged { correction, .. }
+        | Error::NewtonNotConverged { correction, .. }) = *e
+        else {
+            return None;
+        };
+        let stats = NewtonStats {
+            iterations: self.opts.max_iter,
+            jacobians: 1,
+            correction,
+        };
+        if correction <= STUCK_FLOOR * self.opts.tol {
+            return Some(stats);
         }
+        // (the last resort only: see STALLED_FLOOR)
+        let tol = self.cont.tolerance?;
+        if correction > STALLED_FLOOR || self.ds > self.cont.ds_min {
+            return None;
+        }
+        let moved = self.correction_across(x).ok()?;
+        // (a NaN distance is no evidence: not kept)
+        if moved.is_nan() || moved > STALLED_ACROSS * tol {
+            return None;
+        }
+        self.estimate.stalled = self.estimate.stalled.max(moved);
+        Some(stats)
+    }
+
+    /// How far across the branch Newton's next correction at `x`, on the
+    /// current factorisation, would move the point in the diagram's plane,
+    /// to first order (measured across the slope at x₀, like
+    /// [`pinned_across`](Self::pinned_across): along the branch it only
+    /// moves the point on the curve).
+    fn correction_across(&mut self, x: &State) -> Result<f64> {
+        let mut res = self.sys.zero_residual();
+        self.sys.residual(x, &mut res)?;
+        let mut d = self.sys.zero_state();
+        self.sys.solve(&res, &mut d)?;
+        let change = self.diagram_of(x, &d).1;
+        let t0 = self.t0.clone();
+        let slope = self.diagram_of(x, &t0).1;
+        Ok(super::hermite::across([0.0; 2], slope, change))
     }
 
     /// How far across the branch the pinned point `x` lies from the

@@ -66,6 +66,12 @@ pub struct ErrorEstimate {
     /// [`Continuation::pin_slides`](super::Continuation::pin_slides)).
     #[cfg_attr(feature = "serde", serde(default))]
     pub pinned: f64,
+    /// The largest distance across the branch, to first order, by which
+    /// the Newton correction left at a point kept where Newton stalled
+    /// above its tolerance would move it (the rounding floor of a nearly
+    /// singular system; 0 where no point was kept so).
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub stalled: f64,
     /// Points checked against the halved mesh.
     pub checks: u32,
     /// Remeshes (finer or coarser) during the run.
@@ -78,10 +84,18 @@ pub struct ErrorEstimate {
 
 impl ErrorEstimate {
     /// The estimated error of the curve between its points: the mesh error
-    /// plus the pinning's plus the interpolation error.
+    /// plus the solves' ([`solves`](Self::solves)) plus the interpolation
+    /// error.
     #[must_use]
     pub fn curve(&self) -> f64 {
-        self.mesh + self.pinned + self.interpolation
+        self.mesh + self.solves() + self.interpolation
+    }
+
+    /// The error of the points' solves beside the mesh's: the pinning's
+    /// plus the stalled Newtons'.
+    #[must_use]
+    pub fn solves(&self) -> f64 {
+        self.pinned + self.stalled
     }
 }
 
@@ -94,6 +108,9 @@ impl core::fmt::Display for ErrorEstimate {
         )?;
         if self.pinned > 0.0 {
             write!(f, ", pinned {:.1e}", self.pinned)?;
+        }
+        if self.stalled > 0.0 {
+            write!(f, ", stalled {:.1e}", self.stalled)?;
         }
         write!(
             f,

@@ -148,7 +148,7 @@ impl Spring {
         let reported = |run: &crate::rod::PullRun| match question {
             // the folds are located points: their error is the mesh's
             Question::PopOuts { .. } => {
-                ROD_ESTIMATE_SAFETY * (run.estimate().mesh + run.estimate().pinned)
+                ROD_ESTIMATE_SAFETY * (run.estimate().mesh + run.estimate().solves())
             }
             _ => ROD_ESTIMATE_SAFETY * run.estimate().curve(),
         };

@@ -105,7 +105,7 @@ impl PullRun {
     #[must_use]
     pub fn meets_tolerance(&self) -> bool {
         let e = self.estimate;
-        (e.located + e.pinned).max(e.curve()) <= self.tolerance
+        (e.located + e.solves()).max(e.curve()) <= self.tolerance
     }
 
     /// Accepted continuation steps.
@@ -156,7 +156,7 @@ impl core::fmt::Display for PullRun {
                 f,
                 "  the tolerance {:.0e} is NOT met: estimated error {:.1e}",
                 self.tolerance,
-                (self.estimate.located + self.estimate.pinned).max(self.estimate.curve())
+                (self.estimate.located + self.estimate.solves()).max(self.estimate.curve())
             )?;
         }
         for fold in &self.folds {
