@@ -380,10 +380,7 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         self.sys.residual(x, &mut res)?;
         let mut d = self.sys.zero_state();
         self.sys.solve(&res, &mut d)?;
-        let change = self.diagram_of(x, &d).1;
-        let t0 = self.t0.clone();
-        let slope = self.diagram_of(x, &t0).1;
-        Ok(super::hermite::across([0.0; 2], slope, change))
+        Ok(self.across_at(x, &d))
     }
 
     /// How far across the branch the pinned point `x` lies from the
@@ -395,10 +392,15 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         let mut res = self.sys.zero_residual();
         self.sys.residual(x, &mut res)?;
         let part = self.sys.pinned_part(&res)?;
-        let change = self.diagram_of(x, &part).1;
-        let t0 = self.t0.clone();
-        let slope = self.diagram_of(x, &t0).1;
-        Ok(super::hermite::across([0.0; 2], slope, change))
+        Ok(self.across_at(x, &part))
+    }
+
+    /// How far the change `d` of the state at `x` moves the diagram's point
+    /// across the branch, to first order: measured across the slope at x₀.
+    fn across_at(&self, x: &State, d: &State) -> f64 {
+        let change = self.diagram_of(x, d).1;
+        let slope = self.diagram_of(x, &self.t0).1;
+        super::hermite::across([0.0; 2], slope, change)
     }
 
     /// The tangent at `x` without a new factorisation: iterative
