@@ -36,8 +36,9 @@ pub(super) const STUCK_FLOOR: f64 = 100.0;
 /// let a pull to F/((2πn)²B) = 1e10 keep a point with Δz > 1 near 1e9.
 /// Measured (29 Nov, tol 1e-6, so a Newton tolerance of 1e-10): the rod with
 /// A/B = 100 at ν = 0.05 past its last pop-outs, the loops left in the rod
-/// under tension nearly free to slide (n = 6, 8 at θ0 = 89.5°, F/((2πn)²B)
-/// ≈ 7.15; n = 7 at 89.5° and 89.8°), stalls at corrections of 1.7e-8 …
+/// under tension nearly free to slide (n = 6 at θ0 = 89.5° from
+/// F/((2πn)²B) ≈ 7.15, n = 8 there, n = 7 at 89.5° and 89.8°), stalls at
+/// corrections of 1.7e-8 …
 /// 5e-7, which would move the point 1.2e-7 … 5e-7 along the curve and at
 /// most 3.8e-10 across it; the pulls to F/((2πn)²B) = 30 failed there. With
 /// this rule n = 8 at 89.5° reaches 30 with its seven pop-outs (its

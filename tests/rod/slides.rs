@@ -92,16 +92,16 @@ fn pinning_is_off_by_default_and_says_nothing() {
     assert!(!run.to_string().contains("pinned"));
 }
 
-/// Past its last pop-out, n = 8 at (89.5°, A/B = 100, ν = 0.05) leaves
-/// loops in the rod that slide nearly freely: at the shortest step Newton
-/// stalls at corrections a few hundred times its tolerance (1e-10) that
-/// move the point along the curve, not across it, and the pull ended there
-/// (`Failed`, F/((2πn)²B) ≈ 7.15). It now keeps such a point, its distance
-/// across the branch in the estimate (`ErrorEstimate::stalled`), and
-/// reaches the load with the seven pop-outs the phase diagram counts there
-/// (docs/data/phase_diagram_n8.csv; a pull of (89°, 100, 0.05) sees them
-/// too). Its estimate says honestly that the tolerance is not met (the
-/// interpolation there, 2.1e-4).
+/// Past its sixth pop-out, n = 8 at (89.5°, A/B = 100, ν = 0.05) has loops
+/// in the rod that slide nearly freely: at the shortest step Newton stalls
+/// at corrections a few hundred times its tolerance (1e-10) that move the
+/// point along the curve, not across it, and the pull ended there (`Failed`
+/// after six pop-outs, below the seventh's maximum force 7.1616). It now
+/// keeps such a point, its distance across the branch in the estimate
+/// (`ErrorEstimate::stalled`), and reaches the load with the seven pop-outs
+/// the phase diagram counts there (docs/data/phase_diagram_n8.csv; a pull
+/// of (89°, 100, 0.05) sees them too). Its estimate says honestly that the
+/// tolerance is not met (the interpolation there, 2.1e-4).
 #[test]
 fn a_pull_past_a_stalled_newton_at_the_shortest_step_reaches_its_load() {
     let rod = Rod::new(
