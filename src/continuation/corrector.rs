@@ -27,8 +27,8 @@ pub(super) const STUCK_FLOOR: f64 = 100.0;
 
 /// Beyond [`STUCK_FLOOR`]: a corrector whose Newton stalls at the shortest
 /// step, where the run would otherwise fail, at a relative correction of at
-/// most this (a rounding floor of a system whose condition
-/// number reaches ~1e10) keeps its point when that correction would move
+/// most this (a rounding floor of a system whose condition number reaches
+/// ~1e10) keeps its point when that correction would move
 /// the point across the branch in the diagram's plane by at most
 /// [`STALLED_ACROSS`] of the run's tolerance; that distance is added to the
 /// run's estimate ([`ErrorEstimate::stalled`]). A floor, not a multiple of
@@ -38,9 +38,8 @@ pub(super) const STUCK_FLOOR: f64 = 100.0;
 /// A/B = 100 at ν = 0.05 past its last pop-outs, the loops left in the rod
 /// under tension nearly free to slide (n = 6 at θ0 = 89.5° from
 /// F/((2πn)²B) ≈ 7.15, n = 8 there, n = 7 at 89.5° and 89.8°), stalls at
-/// corrections of 1.7e-8 …
-/// 5e-7, which would move the point 1.2e-7 … 5e-7 along the curve and at
-/// most 3.8e-10 across it; the pulls to F/((2πn)²B) = 30 failed there. With
+/// corrections of 1.7e-8 … 5e-7, which would move the point 1.2e-7 … 5e-7
+/// along the curve and at most 3.8e-10 across it; the pulls to F/((2πn)²B) = 30 failed there. With
 /// this rule n = 8 at 89.5° reaches 30 with its seven pop-outs (its
 /// estimate, 2.1e-4, says the tolerance is not met); n = 6 at 89.5° fails a
 /// little further on, where Newton diverges at the shortest step. Kept at

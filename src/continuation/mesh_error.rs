@@ -97,6 +97,13 @@ impl ErrorEstimate {
     pub fn solves(&self) -> f64 {
         self.pinned + self.stalled
     }
+
+    /// The run's estimated error as a whole: the larger of the located
+    /// points' (their mesh error plus the solves') and the curve's.
+    #[must_use]
+    pub fn overall(&self) -> f64 {
+        (self.located + self.solves()).max(self.curve())
+    }
 }
 
 impl core::fmt::Display for ErrorEstimate {

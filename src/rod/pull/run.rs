@@ -104,8 +104,7 @@ impl PullRun {
     /// failed).
     #[must_use]
     pub fn meets_tolerance(&self) -> bool {
-        let e = self.estimate;
-        (e.located + e.solves()).max(e.curve()) <= self.tolerance
+        self.estimate.overall() <= self.tolerance
     }
 
     /// Accepted continuation steps.
@@ -156,7 +155,7 @@ impl core::fmt::Display for PullRun {
                 f,
                 "  the tolerance {:.0e} is NOT met: estimated error {:.1e}",
                 self.tolerance,
-                (self.estimate.located + self.estimate.solves()).max(self.estimate.curve())
+                self.estimate.overall()
             )?;
         }
         for fold in &self.folds {
