@@ -286,7 +286,7 @@ impl Continuation {
     ///   the angle between tangents sets the steps, the cubic it is, without
     ///   the curvatures ([`Point::diagram_curvature`](super::Point::diagram_curvature)
     ///   is `None` there and the dense output cubic);
-    /// - the corrector's Newton tolerance 1e-4·tol (within [1e-12, 1e-6]) and
+    /// - the corrector's Newton tolerance 1e-4·tol (within [1e-12, 3e-7]) and
     ///   the location tolerance 0.05·tol (in arclength).
     ///
     /// What was achieved is in [`Run::estimate`](super::Run::estimate). The

@@ -37,10 +37,7 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
                     }
                 }
             }
-            self.factored_at_x0 = false;
-            self.ds = (0.5 * self.ds).max(self.cont.ds_min);
-            self.rejected += 1;
-            self.rejections.push(self.ds);
+            self.reject_step();
         }
     }
 

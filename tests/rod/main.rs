@@ -8,6 +8,7 @@ mod cascade;
 mod diamonds;
 mod input;
 mod jacobians;
+mod long_springs;
 mod phase_diagram;
 mod planar;
 mod planar_guess;
