@@ -4,6 +4,7 @@
 //! ```text
 //! cargo run --release --example extremes            # special, elastica
 //! cargo run --release --example extremes -- --rod   # the rod only (minutes)
+//! cargo run --release --example extremes -- --long-springs   # n = 12 … 40 (minutes)
 //! ```
 //!
 //! special: against the mpmath table `tests/data/special_extremes.csv`
@@ -362,7 +363,49 @@ fn rod() {
     }
 }
 
+/// The paper's spring with many coils (n = 12 … 40) pulled to
+/// F/((2πn)²B) = 1 at five tolerances: where a long spring's pull reaches
+/// its load, and where it fails (docs/ACCURACY.md, "Long springs").
+fn long_springs() {
+    println!(
+        "| n | tolerance | end | points | folds | Δz at the end | estimate | intervals (max) | time |"
+    );
+    println!("|---|---|---|---|---|---|---|---|---|");
+    for n in [12, 16, 24, 32, 40] {
+        for tol in [1e-2, 3e-3, 1e-3, 1e-4, 1e-6] {
+            let rod = Rod::new(
+                n,
+                89.8_f64.to_radians(),
+                Stiffness::nikolai(10.0, 0.05).expect("valid"),
+            )
+            .expect("valid");
+            let run = match Pull::new(rod, Target::Force(1.0)).tolerance(tol).run(()) {
+                Ok(run) => run,
+                Err(e) => {
+                    println!("| {n} | {tol:.0e} | {e} | | | | | | |");
+                    continue;
+                }
+            };
+            println!(
+                "| {n} | {tol:.0e} | {} | {} | {} | {:.6} | {:.1e} | {} ({}) | {:.1} s |",
+                termination(&run),
+                run.curve().len(),
+                run.folds().len(),
+                last_extension(&run),
+                run.estimate().overall(),
+                run.estimate().intervals,
+                run.estimate().max_intervals,
+                run.elapsed().as_secs_f64(),
+            );
+        }
+    }
+}
+
 fn main() {
+    if std::env::args().any(|a| a == "--long-springs") {
+        long_springs();
+        return;
+    }
     if std::env::args().any(|a| a == "--rod") {
         println!("### rod\n");
         rod();

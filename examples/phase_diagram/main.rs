@@ -198,7 +198,8 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
         if !force {
             eprintln!(
                 "no committed diagram for n = {coils} ({} not found; committed: n = 2, 3, 4, 6, 7, 8): \
-                 computing it, which can take minutes",
+                 computing it, which takes tens of minutes or more (n = 7: 18 minutes; n = 9 had \
+                 not finished after 50 minutes on a two-core machine)",
                 committed.display()
             );
         }
