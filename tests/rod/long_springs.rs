@@ -30,7 +30,7 @@ fn pull(n: u32, tol: f64) -> PullRun {
 /// corrector stopped at corrections of 1e-6 (1e-4 times the tolerance):
 /// near the plateau's folds such points took it ten iterations and the
 /// next step failed at the shortest Δs. The corrector's tolerance is now
-/// at most 3e-7, as at 3e-3, where the pull always reached its load.
+/// at most 3e-7, as at 3e-3, where the same pull reached its load.
 #[test]
 fn a_long_spring_at_a_loose_tolerance_reaches_its_load() {
     let loose = pull(24, 1e-2);
