@@ -9,7 +9,12 @@
 //! points and in the parameters (de Boor & Swartz 1973); the estimate is
 //! twice that distance (`MESH_SAFETY`). Near a fold of λ
 //! the hyperplane crosses the halved mesh's branch near its fold, so the
-//! same check measures the error of the fold.
+//! same check measures the error of the fold. Where the halved mesh's
+//! Newton stalls on a near-null mode (loops sliding along a rod) at a
+//! relative correction ≤ `STALLED_FLOOR`, its point stands if the
+//! correction left would move it across the branch by at most
+//! `STALLED_ACROSS` of the tolerance, and that distance is added to the
+//! check's difference (before: an error, an estimate of ∞).
 //!
 //! The remesh: the current point and tangent are carried onto a new mesh
 //! that equidistributes the density ‖y^(m+1)‖^(1/(m+1)) (as
@@ -20,8 +25,10 @@
 
 use super::Steps;
 use super::corrector::{
-    STUCK_FLOOR, border_rhs_solution, refine_border_solution, set_hyperplane, stalled,
+    STALLED_ACROSS, STALLED_FLOOR, STUCK_FLOOR, border_rhs_solution, refine_border_solution,
+    set_hyperplane, stalled,
 };
+use super::hermite::across;
 use super::norm::IntegralNorm;
 use crate::bvp::system::{State, System};
 use crate::bvp::{
@@ -225,6 +232,8 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         // quotient's floor, ~1e-8 on the rod: where the refinement stalls
         // above it, a factorisation at the point takes over)
         let enough = (0.02 * self.locate_tolerance).max(1e-8);
+        let across_allowed = self.cont.tolerance.map_or(0.0, |tol| STALLED_ACROSS * tol);
+        let mut stalled_across: f64 = 0.0;
         let accepted = self.accepted;
         let Some(h) = self.halved.as_mut() else {
             unreachable!("set above")
@@ -279,6 +288,38 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
                         return Err(e);
                     }
                 }
+                // stalled on a near-null mode (loops sliding) at a relative
+                // correction ≤ STALLED_FLOOR: the point stands where the
+                // correction left would move it across the branch by at
+                // most STALLED_ACROSS of the tolerance, that distance
+                // added to the check's difference (as the corrector's
+                // `stuck` at the shortest step)
+                Err(
+                    e @ (Error::NewtonDiverged { correction, .. }
+                    | Error::NewtonNotConverged { correction, .. }),
+                ) if correction <= STALLED_FLOOR => {
+                    let mut res = h.sys.zero_residual();
+                    h.sys.residual(&fine, &mut res)?;
+                    let mut d = h.sys.zero_state();
+                    h.sys.solve(&res, &mut d)?;
+                    let diagram = &self.cont.diagram;
+                    let (fcol, dcol, tcol) = (
+                        diagram.values(&h.sys, &fine),
+                        diagram.values(&h.sys, &d),
+                        diagram.values(&h.sys, &ts),
+                    );
+                    let change = diagram
+                        .point_and_slope(q, n, (&fine, &fcol), (&d, &dcol), &h.norm)
+                        .1;
+                    let slope = diagram
+                        .point_and_slope(q, n, (&fine, &fcol), (&ts, &tcol), &h.norm)
+                        .1;
+                    let moved = across([0.0; 2], slope, change);
+                    if moved.is_nan() || moved > across_allowed {
+                        return Err(e);
+                    }
+                    stalled_across = stalled_across.max(moved);
+                }
                 Err(e) => return Err(e),
             }
             if !fold {
@@ -324,7 +365,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         let (xcol, tcol) = (diagram.values(&h.sys, &fine), diagram.values(&h.sys, &ts));
         let (p, _) = diagram.point_and_slope(q, n, (&fine, &xcol), (&ts, &tcol), &h.norm);
         self.estimate.checks += 1;
-        let difference = (p[0] - coarse[0]).abs().max((p[1] - coarse[1]).abs());
+        let difference = (p[0] - coarse[0]).abs().max((p[1] - coarse[1]).abs()) + stalled_across;
         if self.halved.as_ref().is_some_and(|h| h.sys.is_pinning()) {
             self.sys.enable_pinning();
         }

@@ -71,3 +71,33 @@ fn a_fold_not_located_over_a_long_step_is_looked_for_in_a_shorter_one() {
         "{run}: Δz up to {furthest}"
     );
 }
+
+/// n = 24 at the default tolerance 1e-6: at the load the loops left in the
+/// rod slide, and the halved-mesh check's Newton stalled there at a
+/// relative correction of 2e-7, which made the run's estimate ∞. A stalled
+/// check now keeps its point where the correction left would move it
+/// across the branch by at most a quarter of the tolerance, that distance
+/// added to its difference. The estimate is finite and bounds the folds'
+/// distance to those of the pull at 1e-7 (which fails before the load, at
+/// Δz ≈ 0.966, past all eight folds; measured: 5e-7 apart against an
+/// estimate of 3.4e-6).
+#[test]
+fn a_mesh_check_stalled_on_sliding_loops_gives_a_finite_estimate() {
+    let run = pull(24, 1e-6);
+    let estimate = run.estimate().overall();
+    assert!(run.reached_target() && estimate.is_finite(), "{run}");
+    let tight = Pull::new(paper_with(24), Target::Force(1.0))
+        .tolerance(1e-7)
+        .run(())
+        .unwrap();
+    assert_eq!(run.folds().len(), tight.folds().len(), "{run}\n{tight}");
+    let scale = run.curve().force_scale();
+    for (a, b) in run.folds().iter().zip(tight.folds()) {
+        let df = (a.point.force - b.point.force).abs() / scale;
+        let dz = (a.point.extension - b.point.extension).abs();
+        assert!(
+            df.max(dz) <= estimate,
+            "{a:?} against {b:?}: {df:e}, {dz:e} > {estimate:e}"
+        );
+    }
+}
