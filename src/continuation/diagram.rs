@@ -101,10 +101,25 @@ impl Diagram {
         Ok(())
     }
 
+    /// The point of `x` and its slope along `t` on the mesh of `sys`
+    /// (normed by `norm`, on the same mesh), λ being parameter `q`:
+    /// [`Self::point_and_slope`] with the collocation values taken there.
+    pub(super) fn point_and_slope_on<P: crate::bvp::Problem + ?Sized>(
+        &self,
+        sys: &crate::bvp::system::System<'_, P>,
+        norm: &IntegralNorm,
+        q: usize,
+        x: &State,
+        t: &State,
+    ) -> ([f64; 2], [f64; 2]) {
+        let (xcol, tcol) = (self.values(sys, x), self.values(sys, t));
+        self.point_and_slope(q, sys.n, (x, &xcol), (t, &tcol), norm)
+    }
+
     /// The point (σ_λ λ, σ_g g) of `x` and its slope along the tangent `t`;
     /// `xcol`, `tcol` are their collocation values (used by
     /// [`Output::Norm`]).
-    pub(super) fn point_and_slope(
+    fn point_and_slope(
         &self,
         parameter: usize,
         n: usize,

@@ -166,15 +166,9 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
 
     /// The point of `x` and its slope along `t` in the diagram's plane.
     pub(super) fn diagram_of(&self, x: &State, t: &State) -> ([f64; 2], [f64; 2]) {
-        let diagram = &self.cont.diagram;
-        let (xcol, tcol) = (diagram.values(&self.sys, x), diagram.values(&self.sys, t));
-        diagram.point_and_slope(
-            self.cont.parameter,
-            self.sys.n,
-            (x, &xcol),
-            (t, &tcol),
-            &self.norm,
-        )
+        self.cont
+            .diagram
+            .point_and_slope_on(&self.sys, &self.norm, self.cont.parameter, x, t)
     }
 
     /// ∫ φ ds of the density that equidistribution balances, at `x`.
@@ -303,17 +297,8 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
                     let mut d = h.sys.zero_state();
                     h.sys.solve(&res, &mut d)?;
                     let diagram = &self.cont.diagram;
-                    let (fcol, dcol, tcol) = (
-                        diagram.values(&h.sys, &fine),
-                        diagram.values(&h.sys, &d),
-                        diagram.values(&h.sys, &ts),
-                    );
-                    let change = diagram
-                        .point_and_slope(q, n, (&fine, &fcol), (&d, &dcol), &h.norm)
-                        .1;
-                    let slope = diagram
-                        .point_and_slope(q, n, (&fine, &fcol), (&ts, &tcol), &h.norm)
-                        .1;
+                    let change = diagram.point_and_slope_on(&h.sys, &h.norm, q, &fine, &d).1;
+                    let slope = diagram.point_and_slope_on(&h.sys, &h.norm, q, &fine, &ts).1;
                     let moved = across([0.0; 2], slope, change);
                     if moved.is_nan() || moved > across_allowed {
                         return Err(e);
@@ -361,9 +346,10 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
                 }
             }
         }
-        let diagram = &self.cont.diagram;
-        let (xcol, tcol) = (diagram.values(&h.sys, &fine), diagram.values(&h.sys, &ts));
-        let (p, _) = diagram.point_and_slope(q, n, (&fine, &xcol), (&ts, &tcol), &h.norm);
+        let (p, _) = self
+            .cont
+            .diagram
+            .point_and_slope_on(&h.sys, &h.norm, q, &fine, &ts);
         self.estimate.checks += 1;
         let difference = (p[0] - coarse[0]).abs().max((p[1] - coarse[1]).abs()) + stalled_across;
         if self.halved.as_ref().is_some_and(|h| h.sys.is_pinning()) {
