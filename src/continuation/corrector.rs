@@ -376,11 +376,15 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
     /// [`pinned_across`](Self::pinned_across): along the branch it only
     /// moves the point on the curve).
     fn correction_across(&mut self, x: &State) -> Result<f64> {
-        let mut res = self.sys.zero_residual();
-        self.sys.residual(x, &mut res)?;
-        let mut d = self.sys.zero_state();
-        self.sys.solve(&res, &mut d)?;
-        Ok(self.across_at(x, &d))
+        let q = self.cont.parameter;
+        correction_across_on(
+            &mut self.sys,
+            &self.norm,
+            &self.cont.diagram,
+            q,
+            x,
+            &self.t0,
+        )
     }
 
     /// How far across the branch the pinned point `x` lies from the
@@ -398,9 +402,10 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
     /// How far the change `d` of the state at `x` moves the diagram's point
     /// across the branch, to first order: measured across the slope at x₀.
     fn across_at(&self, x: &State, d: &State) -> f64 {
-        let change = self.diagram_of(x, d).1;
-        let slope = self.diagram_of(x, &self.t0).1;
-        super::hermite::across([0.0; 2], slope, change)
+        let q = self.cont.parameter;
+        self.cont
+            .diagram
+            .across_on(&self.sys, &self.norm, q, x, (d, &self.t0))
     }
 
     /// The tangent at `x` without a new factorisation: iterative
@@ -429,4 +434,23 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
             .tolerance
             .map_or(1e-10, |tol| (0.1 * tol).max(1e-10))
     }
+}
+
+/// How far across the branch (tangent `t`) Newton's next correction at `x`,
+/// on the current factorisation of `sys`, would move the point in the
+/// diagram's plane, to first order: the corrector's stalled point and the
+/// halved-mesh check's.
+pub(super) fn correction_across_on<P: Problem + ?Sized>(
+    sys: &mut System<'_, P>,
+    norm: &IntegralNorm,
+    diagram: &super::diagram::Diagram,
+    q: usize,
+    x: &State,
+    t: &State,
+) -> Result<f64> {
+    let mut res = sys.zero_residual();
+    sys.residual(x, &mut res)?;
+    let mut d = sys.zero_state();
+    sys.solve(&res, &mut d)?;
+    Ok(diagram.across_on(sys, norm, q, x, (&d, t)))
 }

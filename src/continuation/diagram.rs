@@ -116,6 +116,22 @@ impl Diagram {
         self.point_and_slope(q, sys.n, (x, &xcol), (t, &tcol), norm)
     }
 
+    /// How far the change `d` of the state at `x` moves the diagram's point
+    /// across the branch whose tangent is `t`, to first order (along the
+    /// branch it only moves the point on the curve); on the mesh of `sys`.
+    pub(super) fn across_on<P: crate::bvp::Problem + ?Sized>(
+        &self,
+        sys: &crate::bvp::system::System<'_, P>,
+        norm: &IntegralNorm,
+        q: usize,
+        x: &State,
+        (d, t): (&State, &State),
+    ) -> f64 {
+        let change = self.point_and_slope_on(sys, norm, q, x, d).1;
+        let slope = self.point_and_slope_on(sys, norm, q, x, t).1;
+        super::hermite::across([0.0; 2], slope, change)
+    }
+
     /// The point (σ_λ λ, σ_g g) of `x` and its slope along the tangent `t`;
     /// `xcol`, `tcol` are their collocation values (used by
     /// [`Output::Norm`]).

@@ -25,10 +25,9 @@
 
 use super::Steps;
 use super::corrector::{
-    STALLED_ACROSS, STALLED_FLOOR, STUCK_FLOOR, border_rhs_solution, refine_border_solution,
-    set_hyperplane, stalled,
+    STALLED_ACROSS, STALLED_FLOOR, STUCK_FLOOR, border_rhs_solution, correction_across_on,
+    refine_border_solution, set_hyperplane, stalled,
 };
-use super::hermite::across;
 use super::norm::IntegralNorm;
 use crate::bvp::system::{State, System};
 use crate::bvp::{
@@ -292,14 +291,14 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
                     e @ (Error::NewtonDiverged { correction, .. }
                     | Error::NewtonNotConverged { correction, .. }),
                 ) if correction <= STALLED_FLOOR => {
-                    let mut res = h.sys.zero_residual();
-                    h.sys.residual(&fine, &mut res)?;
-                    let mut d = h.sys.zero_state();
-                    h.sys.solve(&res, &mut d)?;
-                    let diagram = &self.cont.diagram;
-                    let change = diagram.point_and_slope_on(&h.sys, &h.norm, q, &fine, &d).1;
-                    let slope = diagram.point_and_slope_on(&h.sys, &h.norm, q, &fine, &ts).1;
-                    let moved = across([0.0; 2], slope, change);
+                    let moved = correction_across_on(
+                        &mut h.sys,
+                        &h.norm,
+                        &self.cont.diagram,
+                        q,
+                        &fine,
+                        &ts,
+                    )?;
                     if moved.is_nan() || moved > across_allowed {
                         return Err(e);
                     }
