@@ -4,7 +4,7 @@ use std::fmt;
 
 use super::guess::{InitialGuess, state_from_guess};
 use super::mesh::Mesh;
-use super::newton::{NewtonOptions, finish, newton};
+use super::newton::{NewtonOptions, ROUNDOFF_STALL, finish, newton};
 use super::problem::Problem;
 use super::solution::Solution;
 use super::system::{LinearSolver, System};
@@ -185,6 +185,7 @@ impl Collocation {
         NewtonOptions {
             tol: self.newton_tolerance,
             max_iter: self.max_newton,
+            stall: 1.0,
         }
     }
 
@@ -310,7 +311,11 @@ impl Collocation {
         let mut yref = std::mem::take(&mut sys.y_ref);
         sys.collocation_values(&x, &mut yref);
         sys.y_ref = yref;
-        let stats = newton(&mut sys, &mut x, self.newton_options(), false)?;
+        let opts = NewtonOptions {
+            stall: ROUNDOFF_STALL,
+            ..self.newton_options()
+        };
+        let stats = newton(&mut sys, &mut x, opts, false)?;
         finish(&mut sys, x, mesh, stats)
     }
 }

@@ -216,6 +216,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         let opts = NewtonOptions {
             tol: (1e-2 * self.opts.tol).max(1e-12),
             max_iter: 12,
+            stall: 1.0,
         };
         let floor = STUCK_FLOOR * self.opts.tol;
         // (the fold's tangent refined to this relative correction on

@@ -177,6 +177,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
                         (1e-4 * tol).clamp(1e-12, 3e-7)
                     }),
                 max_iter: cont.max_newton,
+                stall: 1.0,
             },
             norm,
             x0,

@@ -548,3 +548,65 @@ proptest::proptest! {
         }
     }
 }
+
+/// u″ = −u + a·noise(u), u(0) = 0, u(1) = 1: a right-hand side whose value
+/// carries a deterministic pseudo-random error of size `a` (as a model
+/// evaluated by an inner iteration, or rounding in a long sum), so
+/// Newton's correction cannot fall below about `a`.
+struct Noisy(f64);
+
+impl hockle::bvp::Problem for Noisy {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn parameter_count(&self) -> usize {
+        0
+    }
+    fn boundary_count(&self) -> usize {
+        2
+    }
+    fn rhs(&self, _s: f64, y: &[f64], _p: &[f64], f: &mut [f64]) {
+        let bits = y[0].to_bits().wrapping_mul(0x9E37_79B9_7F4A_7C15);
+        let noise = (bits >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
+        f[0] = y[1];
+        f[1] = -y[0] + self.0 * noise;
+    }
+    fn boundary(&self, y0: &[f64], y1: &[f64], _p: &[f64], g: &mut [f64]) {
+        g[0] = y0[0];
+        g[1] = y1[0] - 1.0;
+    }
+}
+
+/// A Newton stalled by a rounding floor within ten times its tolerance
+/// keeps its iterate (and says how far it is); beyond that it is an error.
+#[test]
+fn newton_stalled_at_its_rounding_floor_converges() {
+    let tol = 1e-11;
+    let solve = |a: f64| {
+        Collocation::new()
+            .intervals(20)
+            .newton_tolerance(tol)
+            .solve(&Noisy(a), |s: f64| [s, 1.0], &[])
+    };
+    // a = 4e-9: the correction stalls at 4.1e-11 (measured), which damping
+    // cannot reduce; before the floor was accepted this was NewtonDiverged.
+    let s = solve(4e-9).expect("a stall within 10× the tolerance converges");
+    let c = s.newton().correction;
+    assert!(c > tol && c <= 10.0 * tol, "stalled correction {c:e}");
+    // The exact solution is sin s / sin 1; the noise moves it by about a
+    // (the Green's function of u″ + u on [0, 1] is below 1), the
+    // collocation error on 20 intervals with m = 4 is ~1e-12: 1e-7 leaves
+    // 25× room and fails on any wrong iterate.
+    let err = (0..=10)
+        .map(|i| {
+            let t = f64::from(i) / 10.0;
+            (s.eval(t)[0] - t.sin() / 1f64.sin()).abs()
+        })
+        .fold(0.0, f64::max);
+    assert!(err < 1e-7, "error {err:e}");
+    // a = 1.6e-8: the floor (1.3e-10) is more than 10× the tolerance.
+    assert!(matches!(
+        solve(1.6e-8),
+        Err(hockle::Error::NewtonDiverged { .. })
+    ));
+}
