@@ -39,9 +39,16 @@
 //! `--forces` carries the reference pull's pop-outs (their two folds each,
 //! [`hockle::rod::CuspSearch::carry`]: along a staircase about the straight
 //! line in (θ0, ln A/B, ν), four rounds of a leg in each) to each
-//! `--scene` and prints, after its line, one line per pop-out,
-//! `carried pop_out=<i> max=<F> min=<F>` (F/((2πn)²B) of its maximum- and
-//! minimum-force folds there: the hysteresis loop), or `vanished` with the
+//! `--scene`, checks each fold there against its mesh
+//! ([`hockle::rod::CuspSearch::mesh_checked`]: every interval halved until
+//! its force moves by at most 1e-6, at most three times) and prints, after
+//! the scene's line, one line per pop-out,
+//! `carried pop_out=<i> max=<F> min=<F> change=<ΔF>` (F/((2πn)²B) of its
+//! maximum- and minimum-force folds there: the hysteresis loop; ΔF the
+//! larger of the two folds' moves in their last halving, above 1e-6 where
+//! three halvings did not get there, `inf` where the fold was not found on
+//! the halved mesh: the forces printed are then the 48 intervals'), or
+//! `vanished` with the
 //! parameter and value of the cusp where its folds met on the way, or
 //! `ended` with the reason: the forces that the diagram's count does not
 //! give, without pulling the scene to them.
@@ -79,6 +86,10 @@ use std::path::PathBuf;
 
 use hockle::bvp::Solution;
 use hockle::rod::{Fixed, Followed, NikolaiRod, PhaseDiagram, Rod};
+
+/// How far a carried fold's force F/((2πn)²B) may move when its mesh is
+/// halved (`--forces`).
+const FORCE_TOLERANCE: f64 = 1e-6;
 
 /// The committed diagram of n = 4.
 const N4: &str = include_str!("../../docs/data/phase_diagram_n4.csv");
@@ -293,11 +304,24 @@ fn carry_to_scene(
     let search = carry_search();
     for (i, pair) in pops.iter().enumerate() {
         let mut forces = Vec::new();
+        let mut change: f64 = 0.0;
         let mut stopped = None;
         for fold in pair {
             let (leg, followed) = search.carry(family, fold, (t.to_radians(), a, nu))?;
             match followed {
-                Followed::Reached(at) => forces.push(at.parameters()[NikolaiRod::FORCE_SCALED]),
+                Followed::Reached(at) => match search.mesh_checked(family, &at, FORCE_TOLERANCE) {
+                    Ok(checked) => {
+                        forces.push(checked.fold.parameters()[NikolaiRod::FORCE_SCALED]);
+                        change = change.max(checked.change);
+                    }
+                    // the fold on the finer mesh is not found from this
+                    // one: its force is not resolved here
+                    Err(e) => {
+                        eprintln!("  pop-out {}: the fold's mesh check failed: {e}", i + 1);
+                        forces.push(at.parameters()[NikolaiRod::FORCE_SCALED]);
+                        change = f64::INFINITY;
+                    }
+                },
                 Followed::Cusp(c) => {
                     let (name, value) = match leg {
                         Rod::THETA0 => ("theta0", c.parameter().to_degrees()),
@@ -316,7 +340,7 @@ fn carry_to_scene(
         match stopped {
             Some(how) => println!("carried pop_out={} {how}", i + 1),
             None => println!(
-                "carried pop_out={} max={:.6} min={:.6}",
+                "carried pop_out={} max={:.6} min={:.6} change={change:.1e}",
                 i + 1,
                 forces[0],
                 forces[1]

@@ -81,4 +81,6 @@ pub use system::LinearSolver;
 
 pub(crate) use adapt::{density, equidistribute};
 pub(crate) use guess::state_on_mesh;
-pub(crate) use newton::{NewtonOptions, finish, newton, newton_pinned, scaled_norm};
+pub(crate) use newton::{
+    NewtonOptions, ROUNDOFF_STALL, finish, newton, newton_pinned, scaled_norm,
+};

@@ -136,7 +136,7 @@ use crate::error::{Error, Result};
 use crate::load::Control;
 use crate::stiffness::Stiffness;
 
-pub use cascade::{CuspSearch, Followed};
+pub use cascade::{CuspSearch, Followed, MeshChecked};
 pub use contact::Contact;
 pub use equilibrium::Equilibrium;
 pub use nikolai::NikolaiRod;
