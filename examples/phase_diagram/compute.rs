@@ -81,7 +81,9 @@ pub(crate) struct Traced {
     last: Option<Solution>,
 }
 
-/// A cusp curve from `start` in `second` to `to`, or to θ0 = 90°. A run
+/// A cusp curve from `start` in `second` to `to`, or to θ0 = 90°, or out
+/// of the diagram's range of `second` on the other side (a line that turned
+/// back; it ends [`LineEnd::Range`] there, with no last solution). A run
 /// that fails (Newton, the tangent's angle, a location, the step limit) is
 /// resumed from its last point with a quarter of the largest step, at most
 /// three times; then, or when Newton cannot correct a resumption's start,
@@ -102,9 +104,19 @@ pub(crate) fn trace(
     // the last run went (a line that turned back at a swallowtail goes
     // away from `to` for a while)
     let mut direction = (to - start.parameters()[second]).signum();
+    // the end of the diagram's range opposite `to`: a line that turns back
+    // at a swallowtail and leaves the range there ends (n = 9 ran on to
+    // ln A/B = 106 before this bound)
+    let (lo, hi) = if second == NikolaiRod::NU {
+        (NU_MIN, NU_MAX)
+    } else {
+        (A_MIN.ln(), A_MAX.ln())
+    };
+    let left = |value: f64| if to < from { value > hi } else { value < lo };
     for attempt in 0..4 {
         let ds = 0.05 * direction;
         let mut last: Option<FoldPoint> = None;
+        let mut out = false;
         let curve = match search.cusp_curve(
             family,
             &start,
@@ -128,7 +140,12 @@ pub(crate) fn trace(
                     );
                 }
                 last = Some(p.clone());
-                ControlFlow::Continue(())
+                out = left(p.parameter());
+                if out {
+                    ControlFlow::Break(())
+                } else {
+                    ControlFlow::Continue(())
+                }
             },
         ) {
             Ok(curve) => curve,
@@ -151,6 +168,7 @@ pub(crate) fn trace(
         let done = match last.kind() {
             FoldPointKind::ParameterValue => Some((LineEnd::Range, Some(last.solution().clone()))),
             FoldPointKind::Event(0) => Some((LineEnd::Tip, None)),
+            _ if out => Some((LineEnd::Range, None)),
             _ => None,
         };
         if let Some((end, last_solution)) = done {
