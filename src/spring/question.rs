@@ -71,7 +71,9 @@ impl Question {
     ///
     /// # Errors
     /// As [`Question::check`]; [`Error::InvalidArgument`] for values on
-    /// both sides of rest (or at rest), and for extensions when the rest
+    /// both sides of rest (naming the first across it) or all at rest
+    /// (values at rest among others on one side are answered: the rest
+    /// state's Δz = cos θ0 or F = 0), and for extensions when the rest
     /// extension is not known (NaN: a spring with other intrinsic strains
     /// than its helix's); [`Error::UnreachableTarget`] for an extension
     /// outside (−1, 1).
@@ -89,17 +91,37 @@ impl Question {
                           (Question::Curve) and read it with ForceExtension::force_at",
             });
         }
-        let mixed = match self {
-            Question::ExtensionsAt(forces) => !one_side(forces, 0.0),
-            Question::ForcesAt(extensions) => !one_side(extensions, rest_extension),
-            _ => false,
+        let (values, rest) = match self {
+            Question::ExtensionsAt(forces) => (&forces[..], 0.0),
+            Question::ForcesAt(extensions) => (&extensions[..], rest_extension),
+            _ => (&[][..], 0.0),
         };
-        if mixed {
+        if !values.is_empty() && values.iter().all(|v| *v == rest) {
             return Err(Error::InvalidArgument {
-                name: "rest extension",
-                value: rest_extension,
-                allowed: "values all on one side of rest (all pulls or all pushes, none at rest): \
-                          ask pulls and pushes as two questions",
+                name: "values (every one at rest)",
+                value: rest,
+                allowed: "at least one value off rest (at rest F = 0 and Δz = cos θ0, the rest \
+                          state's, with no pull to make)",
+            });
+        }
+        if let Some(value) = across_rest(values, rest) {
+            let (name, allowed) = if matches!(self, Question::ExtensionsAt(_)) {
+                (
+                    "force (across rest, F = 0, from the others)",
+                    "forces all on one side of rest, or at rest (all pulls or all pushes): \
+                     ask pulls and pushes as two questions",
+                )
+            } else {
+                (
+                    "extension (across rest, Δz = cos θ0, from the others)",
+                    "extensions all on one side of rest, or at rest (all pulls or all \
+                     pushes): ask pulls and pushes as two questions",
+                )
+            };
+            return Err(Error::InvalidArgument {
+                name,
+                value,
+                allowed,
             });
         }
         let target = match self {
@@ -196,10 +218,13 @@ fn farthest(values: &[f64], rest: f64) -> f64 {
         .unwrap_or(rest)
 }
 
-/// Whether every value lies on the same side of `rest` (one pull reaches
-/// them all).
-fn one_side(values: &[f64], rest: f64) -> bool {
-    values.iter().all(|v| *v > rest) || values.iter().all(|v| *v < rest)
+/// The first value on the other side of `rest` from the first value off
+/// it, if any: one pull from rest reaches every value at rest or on one
+/// side.
+fn across_rest(values: &[f64], rest: f64) -> Option<f64> {
+    let first = values.iter().find(|v| **v != rest)?;
+    let side = (first - rest).signum();
+    values.iter().copied().find(|v| (v - rest) * side < 0.0)
 }
 
 impl core::fmt::Display for Question {

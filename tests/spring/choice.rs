@@ -301,6 +301,33 @@ fn why_is_typed_and_said() {
     assert!(lower_bound > 0.1 && lower_bound < 0.5, "{a}");
 }
 
+/// A value at rest among others on one side is the rest state's: F = 0
+/// at Δz = cos θ0 (closed form) and back. The error named is the value
+/// across rest.
+#[test]
+fn values_at_rest_among_pulls_are_the_rest_state() {
+    let s = Spring::paper();
+    let rest = s.helix_angle().cos();
+    let tol = 1e-3;
+    let a = s
+        .answer(&Question::ExtensionsAt(vec![0.0, 0.3]), tol)
+        .unwrap();
+    let Value::Extensions(x) = a.value() else {
+        panic!("{a}");
+    };
+    // within the answer's tolerance (measured: 3.4e-13 at 1e-4)
+    assert!(x[0].len() == 1 && (x[0][0] - rest).abs() <= tol, "{x:?}");
+    let a = s.answer(&Question::ForcesAt(vec![rest, 0.5]), tol).unwrap();
+    let Value::Forces(f) = a.value() else {
+        panic!("{a}");
+    };
+    assert!(f[0].len() == 1 && f[0][0].abs() <= tol, "{f:?}");
+    match s.answer(&Question::ExtensionsAt(vec![0.0, 0.3, -0.2]), tol) {
+        Err(hockle::Error::InvalidArgument { value, .. }) => assert_eq!(value, -0.2),
+        other => panic!("{other:?}"),
+    }
+}
+
 #[test]
 fn bad_questions_and_tolerances_are_typed_errors() {
     let s = Spring::paper();
@@ -314,6 +341,7 @@ fn bad_questions_and_tolerances_are_typed_errors() {
         (Question::Curve { max_force: 0.0 }, 1e-4),
         (Question::ForcesAt(vec![]), 1e-4),
         (Question::ExtensionsAt(vec![0.1, -0.1]), 1e-4),
+        (Question::ExtensionsAt(vec![0.0, 0.0]), 1e-4),
         (Question::ForcesAt(vec![0.5, 1.5]), 1e-4),
         (Question::Curve { max_force: 1.0 }, 0.0),
         (Question::Curve { max_force: 1.0 }, f64::INFINITY),
