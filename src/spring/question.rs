@@ -75,7 +75,7 @@ impl Question {
     /// (values at rest among others on one side are answered: the rest
     /// state's Δz = cos θ0 or F = 0), and for extensions when the rest
     /// extension is not known (NaN: a spring with other intrinsic strains
-    /// than its helix's); [`Error::UnreachableTarget`] for an extension
+    /// than its helix's); [`Error::UnreachableTarget`] for any extension
     /// outside (−1, 1).
     pub fn target(&self, rest_extension: f64) -> Result<Option<Target>> {
         self.check()?;
@@ -122,6 +122,16 @@ impl Question {
                 name,
                 value,
                 allowed,
+            });
+        }
+        if let Question::ForcesAt(extensions) = self
+            && let Some(&dz) = extensions.iter().find(|dz| !(**dz > -1.0 && **dz < 1.0))
+        {
+            // (values at rest are read off the pull's first point, but
+            // only inside (−1, 1): cos θ0 rounds to 1 for θ0 → 0)
+            return Err(Error::UnreachableTarget {
+                target: Target::Extension(dz),
+                rest_extension,
             });
         }
         let target = match self {

@@ -124,7 +124,10 @@ fn question(g: &mut Gen, rest: f64) -> Question {
 /// Whether `q` is a valid question for a spring whose rest extension is
 /// `rest` (NaN: not known), from `Question`'s docs.
 fn question_ok(q: &Question, rest: f64) -> bool {
-    let side = |v: &[f64], at: f64| v.iter().all(|x| *x > at) || v.iter().all(|x| *x < at);
+    // every value at rest or on one side of it, and one off it
+    let side = |v: &[f64], at: f64| {
+        (v.iter().all(|x| *x >= at) || v.iter().all(|x| *x <= at)) && v.iter().any(|x| *x != at)
+    };
     match q {
         Question::Curve { max_force } | Question::PopOuts { max_force } => {
             max_force.is_finite() && *max_force != 0.0
