@@ -58,6 +58,7 @@ use super::corrector::Corrected;
 use super::fold_extended::Extended;
 use super::fold_point::{FoldCurve, FoldObserver, FoldPoint, FoldPointKind};
 use super::locate::Watch;
+use super::steps::start_fits;
 use super::{Continuation, PointKind, Steps, Termination};
 use crate::bvp::system::{State, System};
 use crate::bvp::{
@@ -318,20 +319,7 @@ impl FoldContinuation {
             });
         }
         let tab = cont.solver.validate()?;
-        if start.dim() != n || start.parameters().len() != np {
-            return Err(Error::LengthMismatch {
-                name: "start solution dimension",
-                found: start.dim() as u64,
-                expected: n as u64,
-            });
-        }
-        if start.points_per_interval() != tab.m {
-            return Err(Error::InvalidCount {
-                name: "start solution points per interval",
-                value: start.points_per_interval() as u64,
-                allowed: "the solver's m (solve the start with the same Collocation)",
-            });
-        }
+        start_fits(start, n, np, tab.m)?;
         let on = |mesh: &Mesh| -> Result<System<'a, P>> {
             let mut sys = System::new(
                 problem,

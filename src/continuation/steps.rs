@@ -111,6 +111,28 @@ impl<P: Problem + ?Sized> fmt::Debug for Steps<'_, P> {
     }
 }
 
+/// [`Error::LengthMismatch`] unless `start` is a solution of a problem of
+/// dimension `n` with `np` parameters, [`Error::InvalidCount`] unless it
+/// has the solver's `m` collocation points per interval: the checks of a
+/// run's start.
+pub(super) fn start_fits(start: &Solution, n: usize, np: usize, m: usize) -> Result<()> {
+    if start.dim() != n || start.parameters().len() != np {
+        return Err(Error::LengthMismatch {
+            name: "start solution dimension",
+            found: start.dim() as u64,
+            expected: n as u64,
+        });
+    }
+    if start.points_per_interval() != m {
+        return Err(Error::InvalidCount {
+            name: "start solution points per interval",
+            value: start.points_per_interval() as u64,
+            allowed: "the solver's m (solve the start with the same Collocation)",
+        });
+    }
+    Ok(())
+}
+
 impl<'a, P: Problem + ?Sized> Steps<'a, P> {
     pub(super) fn new(
         cont: &'a Continuation,
@@ -122,20 +144,7 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         let np = problem.parameter_count();
         cont.validate(n, np)?;
         let tab = cont.solver.validate()?;
-        if start.dim() != n || start.parameters().len() != np {
-            return Err(Error::LengthMismatch {
-                name: "start solution dimension",
-                found: start.dim() as u64,
-                expected: n as u64,
-            });
-        }
-        if start.points_per_interval() != tab.m {
-            return Err(Error::InvalidCount {
-                name: "start solution points per interval",
-                value: start.points_per_interval() as u64,
-                allowed: "the solver's m (solve the start with the same Collocation)",
-            });
-        }
+        start_fits(start, n, np, tab.m)?;
         let mut free: Vec<usize> = cont.solver.free().to_vec();
         if free.contains(&cont.parameter) {
             return Err(Error::InvalidCount {
