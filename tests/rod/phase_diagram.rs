@@ -680,3 +680,64 @@ const CARRIED_FOLD_TIGHT_LOOPS: f64 = 1e-3;
 /// (`CuspSearch::mesh_checked`) against the adaptive pull's at its
 /// tolerance 1e-6: their sum, rounded up (measured: 3.9e-8 apart, after two halvings).
 const CHECKED_FOLD: f64 = 2e-6;
+
+/// A cusp found on a coarse mesh and checked against its mesh
+/// (`CuspSearch::cusp_mesh_checked`: located again on halved meshes, as a
+/// fold of the fold problem) against the same cusp found directly on 48
+/// intervals (a pull and a fold curve there, sharing only the equations):
+/// pop-out 1 of the paper's spring, its cusp in θ0 at A/B = 10.
+#[test]
+fn a_cusp_checked_on_halved_meshes_is_the_cusp_of_a_finer_mesh() {
+    let rod = Rod::new(
+        4,
+        89.8_f64.to_radians(),
+        Stiffness::nikolai(10.0, 0.05).unwrap(),
+    )
+    .unwrap();
+    let family = NikolaiRod::new(rod, 0.05).unwrap();
+    let cusp_on = |n: usize| {
+        let search = CuspSearch::new().intervals(n);
+        let pops = search.pop_outs(&family, 3.0).unwrap();
+        let Followed::Cusp(c) = search
+            .follow(&family, &pops[0][0], Rod::THETA0, 45_f64.to_radians())
+            .unwrap()
+        else {
+            panic!("pop-out 1 has a cusp in θ0 on {n} intervals");
+        };
+        (search, c)
+    };
+    let (coarse_search, coarse) = cusp_on(16);
+    let (_, direct) = cusp_on(48);
+    let checked = coarse_search
+        .cusp_mesh_checked(&family, coarse.extended(), Rod::THETA0, CUSP_CHECK)
+        .unwrap();
+    assert!(checked.change <= CUSP_CHECK, "{checked:?}");
+    let theta = checked.fold.parameters()[Rod::THETA0];
+    // measured: 16 intervals 2.4e-8 rad off, checked (on 64) 1e-12 from
+    // the direct 48
+    assert!(
+        (coarse.parameter() - direct.parameter()).abs() > 10.0 * CUSP_AGREEMENT,
+        "the coarse cusp is already converged: the check is not tested"
+    );
+    assert!(
+        (theta - direct.parameter()).abs() <= CUSP_AGREEMENT,
+        "checked {theta}, direct {}",
+        direct.parameter()
+    );
+    assert!(matches!(
+        coarse_search.cusp_mesh_checked(&family, coarse.extended(), NikolaiRod::FORCE_SCALED, 1e-9),
+        Err(Error::InvalidCount { .. })
+    ));
+    assert!(matches!(
+        coarse_search.cusp_mesh_checked(&family, coarse.extended(), Rod::THETA0, f64::NAN),
+        Err(Error::InvalidArgument { .. })
+    ));
+}
+
+/// The tolerance the cusp is checked to (radians in θ0).
+const CUSP_CHECK: f64 = 1e-9;
+
+/// The checked cusp against the direct one on 48 intervals: the check's
+/// tolerance plus the direct cusp's own error (its move from 48 to 96
+/// intervals is 1e-12 rad, its location 1e-9 in arclength): 2e-9.
+const CUSP_AGREEMENT: f64 = 2e-9;
