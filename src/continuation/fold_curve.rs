@@ -249,8 +249,8 @@ impl FoldContinuation {
     /// corrected there. (A null vector sought on the new mesh directly,
     /// where the fold has moved, can pick another small mode: measured on
     /// the rod at F/((2πn)²B) ≈ 4.7, whose loops slide at almost no cost,
-    /// Newton then failed from 52 intervals on.) The point's kind is [`FoldPointKind::Start`],
-    /// its arclength 0, its velocity `None`.
+    /// Newton then failed from 52 intervals on.) The point's kind is
+    /// [`FoldPointKind::Start`], its arclength 0, its velocity `None`.
     ///
     /// ```
     /// use hockle::bvp::{Collocation, Mesh};
@@ -292,8 +292,9 @@ impl FoldContinuation {
         })
     }
 
-    /// Checks `start` and corrects the extended problem from it on `mesh`
-    /// (`start` carried onto `mesh` if that is another).
+    /// Checks `start`, corrects the extended problem from it on its own
+    /// mesh and, if `mesh` is another, carries that onto `mesh` and
+    /// corrects it again there.
     fn start_on<'a, P: Problem + ?Sized>(
         &self,
         problem: &'a P,
@@ -414,7 +415,7 @@ impl FoldContinuation {
 
 /// The start of a fold curve ([`FoldContinuation::start_on`]).
 struct ExtendedStart<'a, P: Problem + ?Sized> {
-    /// The problem's own system on the start's mesh.
+    /// The problem's own system on the mesh of the corrected start.
     sys: System<'a, P>,
     /// The extended problem (module docs).
     ext: Extended<'a, P>,
