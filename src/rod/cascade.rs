@@ -242,13 +242,7 @@ impl CuspSearch {
         parameter: usize,
         to: f64,
     ) -> Result<Followed> {
-        if ![Rod::THETA0, NikolaiRod::LN_A_OVER_B, NikolaiRod::NU].contains(&parameter) {
-            return Err(Error::InvalidCount {
-                name: "fold-curve parameter",
-                value: parameter as u64,
-                allowed: "Rod::THETA0, NikolaiRod::LN_A_OVER_B or NikolaiRod::NU",
-            });
-        }
+        a_spring_parameter("fold-curve parameter", parameter)?;
         of_the_family(start)?;
         let from = start.parameters()[parameter];
         if from == to {
@@ -391,13 +385,11 @@ impl CuspSearch {
         fold: &Solution,
         tol: f64,
     ) -> Result<MeshChecked> {
-        if !(tol > 0.0 && tol.is_finite()) {
-            return Err(Error::InvalidArgument {
-                name: "fold force tolerance",
-                value: tol,
-                allowed: "a positive finite change of F/((2πn)²B)",
-            });
-        }
+        a_tolerance(
+            "fold force tolerance",
+            tol,
+            "a positive finite change of F/((2πn)²B)",
+        )?;
         of_the_family(fold)?;
         let locate = FoldContinuation::new(
             NikolaiRod::FORCE_SCALED,
@@ -438,20 +430,12 @@ impl CuspSearch {
         parameter: usize,
         tol: f64,
     ) -> Result<MeshChecked> {
-        if ![Rod::THETA0, NikolaiRod::LN_A_OVER_B, NikolaiRod::NU].contains(&parameter) {
-            return Err(Error::InvalidCount {
-                name: "cusp parameter",
-                value: parameter as u64,
-                allowed: "Rod::THETA0, NikolaiRod::LN_A_OVER_B or NikolaiRod::NU",
-            });
-        }
-        if !(tol > 0.0 && tol.is_finite()) {
-            return Err(Error::InvalidArgument {
-                name: "cusp tolerance",
-                value: tol,
-                allowed: "a positive finite change of the cusp's parameter",
-            });
-        }
+        a_spring_parameter("cusp parameter", parameter)?;
+        a_tolerance(
+            "cusp tolerance",
+            tol,
+            "a positive finite change of the cusp's parameter",
+        )?;
         // (the fold problem's continuation parameter, fixed here)
         let fixed = if parameter == Rod::THETA0 {
             NikolaiRod::LN_A_OVER_B
@@ -512,6 +496,31 @@ pub struct MeshChecked {
     pub change: f64,
     /// How many times the mesh was halved.
     pub halvings: u32,
+}
+
+/// [`Error::InvalidCount`] unless `parameter` is one of the spring's:
+/// θ0, ln A/B or ν.
+fn a_spring_parameter(name: &'static str, parameter: usize) -> Result<()> {
+    if [Rod::THETA0, NikolaiRod::LN_A_OVER_B, NikolaiRod::NU].contains(&parameter) {
+        return Ok(());
+    }
+    Err(Error::InvalidCount {
+        name,
+        value: parameter as u64,
+        allowed: "Rod::THETA0, NikolaiRod::LN_A_OVER_B or NikolaiRod::NU",
+    })
+}
+
+/// [`Error::InvalidArgument`] unless `tol` is positive and finite.
+fn a_tolerance(name: &'static str, tol: f64, allowed: &'static str) -> Result<()> {
+    if tol > 0.0 && tol.is_finite() {
+        return Ok(());
+    }
+    Err(Error::InvalidArgument {
+        name,
+        value: tol,
+        allowed,
+    })
 }
 
 /// [`Error::LengthMismatch`] unless `start` has a [`NikolaiRod`]'s
