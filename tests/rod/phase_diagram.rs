@@ -477,16 +477,22 @@ fn paper_pop_outs() -> (NikolaiRod, CuspSearch, Vec<[hockle::bvp::Solution; 2]>)
     reference_pop_outs(4)
 }
 
-/// [`paper_pop_outs`] for n coils: the diagrams' reference spring
-/// (θ0 = 89.8°, A/B = 10, ν = 0.05).
-fn reference_pop_outs(n: u32) -> (NikolaiRod, CuspSearch, Vec<[hockle::bvp::Solution; 2]>) {
+/// The diagrams' reference spring of n coils (θ0 = 89.8°, A/B = 10,
+/// ν = 0.05) as a `NikolaiRod`.
+fn reference_family(n: u32) -> NikolaiRod {
     let rod = Rod::new(
         n,
         89.8_f64.to_radians(),
         Stiffness::nikolai(10.0, 0.05).unwrap(),
     )
     .unwrap();
-    let family = NikolaiRod::new(rod, 0.05).unwrap();
+    NikolaiRod::new(rod, 0.05).unwrap()
+}
+
+/// [`paper_pop_outs`] for n coils: the reference spring
+/// ([`reference_family`]).
+fn reference_pop_outs(n: u32) -> (NikolaiRod, CuspSearch, Vec<[hockle::bvp::Solution; 2]>) {
+    let family = reference_family(n);
     let search = CuspSearch::new();
     let pops = search.pop_outs(&family, 3.0).unwrap();
     (family, search, pops)
@@ -688,13 +694,7 @@ const CHECKED_FOLD: f64 = 2e-6;
 /// pop-out 1 of the paper's spring, its cusp in θ0 at A/B = 10.
 #[test]
 fn a_cusp_checked_on_halved_meshes_is_the_cusp_of_a_finer_mesh() {
-    let rod = Rod::new(
-        4,
-        89.8_f64.to_radians(),
-        Stiffness::nikolai(10.0, 0.05).unwrap(),
-    )
-    .unwrap();
-    let family = NikolaiRod::new(rod, 0.05).unwrap();
+    let family = reference_family(4);
     let cusp_on = |n: usize| {
         let search = CuspSearch::new().intervals(n);
         let pops = search.pop_outs(&family, 3.0).unwrap();
