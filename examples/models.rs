@@ -48,8 +48,12 @@
 //! curve; with `--ends THETA0_DEG,A_OVER_B,NU`, the rod's excess extension
 //! over the helix times n for n = 1 … 8 (same file). With `--shapes`, what
 //! the shape at one load costs (`examples/models/shapes.rs`); with
-//! `--helix-data [--random N] [--seed S]`, the helix's true error on the
-//! grid and on fresh random scenes, as CSV (`examples/models/helix_bound.rs`).
+//! `--helix-data [--random N] [--seed S] [--scene …]`, the helix's true
+//! error and its end layers' estimate on the grid (or the scenes given) and
+//! on fresh random scenes, as CSV (`examples/models/helix_bound.rs`); with
+//! `--pop-out-margin`, how far below a 2-coil rod's first fold and the
+//! helix's force maximum a spring's first pop-out comes
+//! (`examples/models/pop_out_margin.rs`).
 
 use std::time::{Duration, Instant};
 
@@ -62,6 +66,8 @@ mod measure;
 use measure::{CRAWL_SPAN, CRAWL_STEPS, Crawl};
 #[path = "models/plot.rs"]
 mod plot;
+#[path = "models/pop_out_margin.rs"]
+mod pop_out_margin;
 #[path = "models/shapes.rs"]
 mod shapes;
 #[path = "models/trade.rs"]
@@ -95,6 +101,7 @@ fn main() -> std::process::ExitCode {
         Some("--trade") => trade::run(&args[1..]),
         Some("--on-demand") => trade::on_demand(),
         Some("--helix-data") => helix_bound::run(&args[1..]),
+        Some("--pop-out-margin") => pop_out_margin::run(),
         Some("--shapes") => shapes::run(),
         Some("--ends") => args
             .get(1)
@@ -141,7 +148,7 @@ fn scenes(args: &[String]) -> Result<(), String> {
     if list.is_empty() {
         return Err(
             "no --scene N,THETA0_DEG,A_OVER_B,NU given (or --trade, --on-demand, --shapes, \
-             --helix-data, --ends; no argument for the table)"
+             --helix-data, --pop-out-margin, --ends; no argument for the table)"
                 .into(),
         );
     }

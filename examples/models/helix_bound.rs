@@ -1,6 +1,7 @@
-//! `--helix-data [--random N] [--seed S]`: what a certificate of the exact
-//! helix would have to bound (docs/ACCURACY.md, "Why the helix is not
-//! certified"). For the issue's 48 grid scenes, then N fresh random scenes
+//! `--helix-data [--random N] [--seed S] [--scene N,THETA0_DEG,A_OVER_B,NU]…`:
+//! what a certificate of the exact helix has to bound (docs/ACCURACY.md,
+//! "Why the helix is not certified", "The helix certified by its end
+//! layers"). For the issue's 48 grid scenes (or the scenes given), then N fresh random scenes
 //! (n 2–8, θ0 60–89.9°, A/B 0.1–20 log-uniform, ν 0–0.4; none used to
 //! choose anything), one CSV row per scene: the helix's true error to
 //! F/((2πn)²B) = 1 (both ways, max norm in (Δz, F/((2πn)²B)), against the
@@ -8,13 +9,22 @@
 //! largest Δz_rod − Δz_helix at one force over f = 0.02 … 1 (first
 //! crossing), the pop-outs below 1, and the two closed-form slopes at rest
 //! (the rod's, the helix's, in units of (2πn)²B), from which candidate
-//! bounds are formed offline.
+//! bounds are formed offline; and the helix's error as `Spring::answer`
+//! estimates it from its end layers on a 2-coil rod at tolerance 1e-2
+//! (`folds` where a pop-out may come near the load, `-`
+//! where the check is not run: n ≤ 2, or n·tolerance too small); and,
+//! computed here independently of the library's check, the distance d (both
+//! ways) between the helix and the curve its end layers predict,
+//! Δz_helix + (2/n)(Δz_2 − Δz_helix) at the helix's samples, with Δz_2 from
+//! a 2-coil rod converged as the reference (empty where it or the helix's
+//! force folds below the load).
 
 use hockle::Stiffness;
+use hockle::curve::{ForceExtension, ForcePoint};
 use hockle::helix::Helix;
-use hockle::spring::{HelixModel, Model, RodModel, Spring};
+use hockle::spring::{Choice, HelixModel, Model, Question, Reason, RodModel, SetAside, Spring};
 
-use crate::measure::{both_ways, drawn, grid_scenes};
+use crate::measure::{bare, both_ways, drawn, grid_scenes};
 
 /// A scene: n, θ0 in degrees, A/B, ν.
 type Scene = (u32, f64, f64, f64);
@@ -35,7 +45,7 @@ fn random_scenes(seed: u64, count: usize) -> Vec<Scene> {
 
 /// `--helix-data`.
 pub fn run(args: &[String]) -> Result<(), String> {
-    let (mut count, mut seed) = (0usize, 0x14c0_ffee_u64);
+    let (mut count, mut seed, mut given) = (0usize, 0x14c0_ffee_u64, Vec::new());
     let mut it = args.iter();
     while let Some(flag) = it.next() {
         let value = it.next().ok_or_else(|| format!("{flag} needs a value"))?;
@@ -50,19 +60,31 @@ pub fn run(args: &[String]) -> Result<(), String> {
                     .ok_or_else(|| format!("--random {value}: a count of scenes up to 100000"))?;
             }
             "--seed" => seed = value.parse().map_err(|_| format!("--seed {value}"))?,
-            other => return Err(format!("unknown flag {other} (--random N, --seed S)")),
+            "--scene" => given.push(crate::parse_scene(value)?),
+            other => {
+                return Err(format!(
+                    "unknown flag {other} (--random N, --seed S, --scene N,THETA0_DEG,A_OVER_B,NU)"
+                ));
+            }
         }
     }
-    let scenes: Vec<(&str, Scene)> = grid_scenes()
+    // scenes given replace the grid
+    let fixed = if given.is_empty() {
+        grid_scenes().into_iter().map(|s| ("grid", s)).collect()
+    } else {
+        given.into_iter().map(|s| ("given", s)).collect::<Vec<_>>()
+    };
+    let scenes: Vec<(&str, Scene)> = fixed
         .into_iter()
-        .map(|s| ("grid", s))
         .chain(
             random_scenes(seed, count)
                 .into_iter()
                 .map(|s| ("random", s)),
         )
         .collect();
-    println!("set,n,theta0,a_over_b,nu,helix_true,dz_excess_max,f_at_max,pop_outs,k_rod,k_helix");
+    println!(
+        "set,n,theta0,a_over_b,nu,helix_true,dz_excess_max,f_at_max,pop_outs,k_rod,k_helix,end_layer_estimate,end_layer_distance"
+    );
     for (set, (n, theta0, a_over_b, nu)) in scenes {
         let stiffness = Stiffness::nikolai(a_over_b, nu).map_err(|e| e.to_string())?;
         let s = Spring::from_degrees(n, theta0, stiffness).map_err(|e| e.to_string())?;
@@ -74,7 +96,7 @@ pub fn run(args: &[String]) -> Result<(), String> {
             .pull(&s, 1.0)
             .map_err(|e| e.to_string())?;
         if !reference.reached_target() {
-            println!("{set},{n},{theta0},{a_over_b},{nu},stopped,,,,,");
+            println!("{set},{n},{theta0},{a_over_b},{nu},stopped,,,,,,,");
             continue;
         }
         let helix = HelixModel::new(2000)
@@ -103,9 +125,83 @@ pub fn run(args: &[String]) -> Result<(), String> {
             .map_err(|e| e.to_string())?
             / scale;
         println!(
-            "{set},{n},{theta0:.3},{a_over_b:.4},{nu:.3},{truth:.4e},{worst:.4e},{at},{},{k_rod:.5},{k_helix:.5}",
-            reference.pop_outs().len()
+            "{set},{n},{theta0:.3},{a_over_b:.4},{nu:.3},{truth:.4e},{worst:.4e},{at},{},{k_rod:.5},{k_helix:.5},{},{}",
+            reference.pop_outs().len(),
+            end_layer_estimate(&s)?,
+            end_layer_distance(&s)?
+                .map(|d| format!("{d:.4e}"))
+                .unwrap_or_default()
         );
     }
     Ok(())
+}
+
+/// The helix's error as `Spring::answer` estimates it from its end layers
+/// for the curve to F/((2πn)²B) = 1 at tolerance 1e-2: the helix's answer's
+/// estimate where it was chosen, else the estimate that set it aside.
+fn end_layer_estimate(spring: &Spring) -> Result<String, String> {
+    let answer = spring
+        .answer(&Question::Curve { max_force: 1.0 }, 1e-2)
+        .map_err(|e| e.to_string())?;
+    Ok(match (answer.choice(), answer.reason()) {
+        (Choice::Helix, _) => format!("{:.4e}", answer.estimated_error()),
+        (
+            _,
+            Reason::RodNeeded {
+                helix: SetAside::EndLayers { estimate },
+                ..
+            },
+        ) => format!("{estimate:.4e}"),
+        (
+            _,
+            Reason::RodNeeded {
+                helix: SetAside::NearAPopOut { .. },
+                ..
+            },
+        ) => "folds".to_owned(),
+        _ => "-".to_owned(),
+    })
+}
+
+/// The distance both ways between the spring's helix pulled to
+/// F/((2πn)²B) = 1 and the curve its end layers predict (module docs), or
+/// `None` where the helix's force or the 2-coil rod folds below the load
+/// (where `Spring::answer` sets the helix aside unchecked).
+fn end_layer_distance(spring: &Spring) -> Result<Option<f64>, String> {
+    const SHORT: u32 = 2;
+    // (200 samples: the distance between two polylines of 2000 costs
+    // half a minute here)
+    let helix = HelixModel::new(200)
+        .and_then(|m| m.pull(spring, 1.0))
+        .map_err(|e| e.to_string())?;
+    let short_spring =
+        Spring::new(SHORT, spring.helix_angle(), spring.stiffness()).map_err(|e| e.to_string())?;
+    let short = RodModel::default()
+        .tolerance(1e-8)
+        .intervals(10 * SHORT as usize)
+        .points(7)
+        .pull(&short_spring, 1.0)
+        .map_err(|e| e.to_string())?;
+    let rises = helix
+        .curve()
+        .points()
+        .windows(2)
+        .all(|w| w[1].force > w[0].force);
+    if !rises || !short.reached_target() || !short.folds().is_empty() {
+        return Ok(None);
+    }
+    let weight = f64::from(SHORT) / f64::from(spring.coils());
+    let mut predicted = ForceExtension::new("predicted", "force", spring.scale());
+    for p in helix.curve().points() {
+        let f = p.force / spring.force_scale();
+        let [dz] = short.curve().extension_at(f * short_spring.force_scale())[..] else {
+            return Ok(None);
+        };
+        predicted.push(ForcePoint {
+            extension: p.extension + weight * (dz - p.extension),
+            force: p.force,
+            parameter: p.force,
+        });
+    }
+    Ok(Some(both_ways(&bare(helix.curve()), &bare(&predicted))))
 }

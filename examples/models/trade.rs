@@ -5,7 +5,7 @@
 //! Models: the linear response (the rod's tangent at rest, Castigliano's
 //! closed form), the exact helix (200 samples), the flat elastica (its
 //! default samples), and `Spring::answer` for the curve at 1e-2, 1e-4 and
-//! 1e-6 (which model it chose is printed; at this load it is the rod).
+//! 1e-6 (which model it chose is printed).
 //! True error: both ways, max norm in (Δz, F/((2πn)²B)), against the rod
 //! converged on a fixed mesh of 10 intervals per coil with m = 7 at
 //! tolerance 1e-8 (`measure.rs`). Time: on-CPU seconds of the thread

@@ -43,6 +43,10 @@ pub enum Choice {
     /// A closed form of the linear response at rest
     /// ([`Spring::spring_constant`](super::Spring::spring_constant)).
     LinearResponse,
+    /// The exact helix ([`HelixModel`](super::HelixModel)), its error
+    /// estimated from its end layers measured on a rod of
+    /// [`Choice::HELIX_CHECK_COILS`] coils.
+    Helix,
     /// The 3D rod ([`RodModel`](super::RodModel)) at this tolerance.
     Rod {
         /// The tolerance the rod was run at.
@@ -51,11 +55,16 @@ pub enum Choice {
 }
 
 impl Choice {
-    /// A short name for tables: `linear` or `rod`.
+    /// Coils of the short rod whose end layers, scaled to the spring's
+    /// coils, estimate the exact helix's error ([`Reason::EndLayersScaled`]).
+    pub const HELIX_CHECK_COILS: u32 = super::helix_check::SHORT_COILS;
+
+    /// A short name for tables: `linear`, `helix` or `rod`.
     #[must_use]
     pub fn name(&self) -> &'static str {
         match self {
             Choice::LinearResponse => "linear",
+            Choice::Helix => "helix",
             Choice::Rod { .. } => "rod",
         }
     }
@@ -65,6 +74,7 @@ impl core::fmt::Display for Choice {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match self {
             Choice::LinearResponse => f.write_str("linear response (closed form)"),
+            Choice::Helix => f.write_str("exact helix"),
             Choice::Rod { tolerance } => write!(f, "rod at tolerance {tolerance:.0e}"),
         }
     }
@@ -101,6 +111,20 @@ pub enum SetAside {
     NoBound,
     /// The question is not one this model answers (e.g. a push).
     NotAnswered,
+    /// The helix's end layers, measured on a rod of
+    /// [`Choice::HELIX_CHECK_COILS`] coils and scaled to the spring's coils
+    /// ([`Reason::EndLayersScaled`]), put its error above the tolerance.
+    EndLayers {
+        /// The helix's estimated error.
+        estimate: f64,
+    },
+    /// A pop-out may come near the load, where the end layers do not
+    /// scale: the helix's force peaks, or the short rod that measures its
+    /// end layers ([`SetAside::EndLayers`]) folds, within twice the load.
+    NearAPopOut {
+        /// That force maximum or fold, F/((2πn)²B).
+        force: f64,
+    },
     /// The spring's ends lie on the force line, the helix's (about that
     /// line) at its radius R = sin θ/(2πn) at the load: its shape is at
     /// least R off at the ends, whatever its turn about the line.
@@ -128,6 +152,17 @@ impl core::fmt::Display for SetAside {
             ),
             SetAside::NoBound => f.write_str("no error bound without the rod"),
             SetAside::NotAnswered => f.write_str("does not answer this question"),
+            SetAside::EndLayers { estimate } => write!(
+                f,
+                "its end layers, measured on a {}-coil rod, put its error at {estimate:.1e}",
+                Choice::HELIX_CHECK_COILS
+            ),
+            SetAside::NearAPopOut { force } => write!(
+                f,
+                "a pop-out may come near the load: it or a {}-coil rod folds at F/((2πn)²B) = {force:.3}, \
+                 within twice the load, where its end layers do not scale",
+                Choice::HELIX_CHECK_COILS
+            ),
             SetAside::MissesTheEnds { lower_bound } => write!(
                 f,
                 "its ends lie {lower_bound:.1e} off the force line, the spring's on it"
@@ -142,6 +177,14 @@ impl core::fmt::Display for SetAside {
 pub enum Reason {
     /// The linear response at rest is a closed form, exact up to rounding.
     ClosedForm,
+    /// The exact helix meets the tolerance: the spring is the helix plus
+    /// two end layers whose excess extension falls as 1/n; they were
+    /// measured on a rod of [`Choice::HELIX_CHECK_COILS`] coils, scaled to
+    /// the spring's `coils`, and give the estimated error.
+    EndLayersScaled {
+        /// The spring's coils.
+        coils: u32,
+    },
     /// Neither cheap model can be certified at the tolerance: the rod
     /// answered, the cheapest rod that meets it: for a curve, run at half
     /// the tolerance asked (its estimate is reported doubled); for a shape,
@@ -247,6 +290,12 @@ impl Answer {
         match self.reason {
             Reason::ClosedForm => format!(
                 "linear response: closed form (Castigliano on the rest helix), estimated error {:.0e} (relative)",
+                self.estimated_error
+            ),
+            Reason::EndLayersScaled { coils } => format!(
+                "{}: its end layers, measured on a {}-coil rod and scaled to {coils} coils, put its error at {:.1e}",
+                self.choice,
+                Choice::HELIX_CHECK_COILS,
                 self.estimated_error
             ),
             Reason::RodNeeded {

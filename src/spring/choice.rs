@@ -7,7 +7,8 @@
 //! | question | model | when |
 //! |---|---|---|
 //! | spring constant | linear response (closed form, [`Spring::spring_constant`]) | helical intrinsic strains |
-//! | anything else | exact helix | never certified: loaded on its axis, it leaves the rest state with another slope (k_rod/k_helix from 0.41 for a slinky to 0.65 for n = 6, θ0 = 89.9°, A/B = 20) |
+//! | a curve, forces or extensions | exact helix | its two end layers, measured on a 2-coil rod and scaled to the spring's n coils, put its error within the tolerance (`helix_check`; tried where n·tolerance/sin²θ0 can allow it) |
+//! | pop-outs | exact helix | never: it has none |
 //! | anything else | flat elastica | never certified: it passes ≥ 0.4 cos θ0 from the rest state, ignores pitch, A, C and pop-outs, and no bound on its error is known without the rod |
 //! | shape at one load | exact helix | never: about the force line its ends are its radius R off the spring's ([`SetAside::MissesTheEnds`](super::SetAside::MissesTheEnds)), and no bound on its interior is known |
 //! | shape at one load | rod at the tolerance, its last point solved again on halved meshes until the centrelines agree to the tolerance | always ([`LoadedShape`](super::LoadedShape)) |
@@ -24,7 +25,9 @@ use crate::helix::Helix;
 use crate::load::{Control, Target};
 
 use super::answer::{Answer, Choice, Reason, SetAside, Value};
-use super::{ElasticaModel, Model, Question, RodModel, Spring};
+use super::helix_check::{self, Verdict};
+use super::plane_distance;
+use super::{ElasticaModel, Model, Question, Response, RodModel, Spring};
 
 /// The closed form's relative error: a dozen roundings and sin θ0, cos θ0
 /// (≤ 20 ε ≈ 4.4e-15), with a margin (`tests/spring/choice.rs` measures it
@@ -39,7 +42,7 @@ const CLOSED_FORM_ERROR: f64 = 1e-14;
 /// the paper's spring to F/((2πn)²B) = 0.7: 1.46 at 1e-6). The factor was
 /// set on those springs alone; the grid of 48 scenes (docs/ACCURACY.md)
 /// checks it.
-const ROD_ESTIMATE_SAFETY: f64 = 2.0;
+pub(super) const ROD_ESTIMATE_SAFETY: f64 = 2.0;
 
 /// The rod is run at the tolerance over [`ROD_ESTIMATE_SAFETY`]; if the
 /// reported error still exceeds the tolerance, it is run once more at a
@@ -130,7 +133,25 @@ impl Spring {
         // (why the cheap models are set aside is said, not needed: where
         // their own closed form or pull fails, e.g. a spring constant
         // beyond the double range, the rod still answers)
-        let helix = self.helix_set_aside(target).unwrap_or(SetAside::NoBound);
+        let helix = match self.helix_verdict(question, target, tolerance) {
+            Ok(Verdict::Certified(response)) => {
+                let estimated_error = response.estimated_error().unwrap_or(f64::INFINITY);
+                return Ok(Answer {
+                    value: value_of(question, &response, self.force_scale()),
+                    estimated_error,
+                    tolerance,
+                    choice: Choice::Helix,
+                    reason: Reason::EndLayersScaled {
+                        coils: self.coils(),
+                    },
+                    reached: response.reached_target(),
+                    termination: Some(response.termination().clone()),
+                    elapsed: clock.elapsed(),
+                });
+            }
+            Ok(Verdict::SetAside(why)) => why,
+            Err(_) => SetAside::NoBound,
+        };
         let elastica = self
             .elastica_set_aside(target, tolerance)
             .unwrap_or(SetAside::NoBound);
@@ -160,28 +181,8 @@ impl Spring {
         let reached = run.reached_target();
         let termination = run.termination().clone();
         let response = RodModel::response(run)?;
-        let pop_outs = response.pop_outs();
-        let scale = self.force_scale();
-        let curve = response.curve();
-        let value = match question {
-            Question::ForcesAt(extensions) => Value::Forces(
-                extensions
-                    .iter()
-                    .map(|&dz| curve.force_at(dz).iter().map(|f| f / scale).collect())
-                    .collect(),
-            ),
-            Question::ExtensionsAt(forces) => Value::Extensions(
-                forces
-                    .iter()
-                    .map(|&f| curve.extension_at(f * scale))
-                    .collect(),
-            ),
-            Question::PopOuts { .. } => Value::PopOuts {
-                jumps: response.jumps(Control::Force),
-                pop_outs: pop_outs.clone(),
-            },
-            _ => Value::Curve(Box::new(response.clone())),
-        };
+        let pop_outs = response.pop_outs().len();
+        let value = value_of(question, &response, self.force_scale());
         Ok(Answer {
             value,
             estimated_error,
@@ -192,7 +193,7 @@ impl Spring {
             reason: Reason::RodNeeded {
                 helix,
                 elastica,
-                pop_outs: pop_outs.len(),
+                pop_outs,
             },
             reached,
             termination: Some(termination),
@@ -200,7 +201,32 @@ impl Spring {
         })
     }
 
-    /// Why the exact helix cannot answer a pull to `target`.
+    /// Whether the exact helix answers `question`, a pull to `target`,
+    /// within `tolerance`: checked by its end layers (`helix_check`) for
+    /// the questions a curve answers where the check can pass, else why
+    /// not.
+    fn helix_verdict(
+        &self,
+        question: &Question,
+        target: Target,
+        tolerance: f64,
+    ) -> Result<Verdict> {
+        let read_off_a_curve = matches!(
+            question,
+            Question::Curve { .. } | Question::ForcesAt(_) | Question::ExtensionsAt(_)
+        );
+        let set_aside = self.helix_set_aside(target)?;
+        if read_off_a_curve
+            && matches!(set_aside, SetAside::LoadedOnItsAxis { .. })
+            && helix_check::worth_checking(self, tolerance)
+        {
+            helix_check::check(self, target, tolerance)
+        } else {
+            Ok(Verdict::SetAside(set_aside))
+        }
+    }
+
+    /// Why the exact helix cannot answer a pull to `target` unchecked.
     fn helix_set_aside(&self, target: Target) -> Result<SetAside> {
         if !self.is_helical() {
             return Ok(SetAside::NotHelical);
@@ -238,7 +264,7 @@ impl Spring {
             .map(|w| {
                 let a = [w[0].extension, w[0].force / scale];
                 let b = [w[1].extension, w[1].force / scale];
-                max_norm_to_segment([c, 0.0], a, b)
+                plane_distance::to_segment([c, 0.0], a, b)
             })
             .fold(f64::INFINITY, f64::min);
         let lower_bound = LOWER_BOUND_MARGIN * distance;
@@ -258,24 +284,27 @@ fn pulls(target: Target, rest: f64) -> bool {
     }
 }
 
-/// Max-norm distance from `p` to the segment [a, b]: the maximum of the
-/// two coordinate distances is convex along the segment, so ternary
-/// search finds its minimum.
-fn max_norm_to_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
-    let at = |t: f64| {
-        let x = a[0] + t * (b[0] - a[0]);
-        let y = a[1] + t * (b[1] - a[1]);
-        (x - p[0]).abs().max((y - p[1]).abs())
-    };
-    let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
-    for _ in 0..100 {
-        let m1 = lo + (hi - lo) / 3.0;
-        let m2 = hi - (hi - lo) / 3.0;
-        if at(m1) <= at(m2) {
-            hi = m2;
-        } else {
-            lo = m1;
-        }
+/// The value `question` asks for, read off `response` (forces in units of
+/// `scale`, (2πn)²B).
+fn value_of(question: &Question, response: &Response, scale: f64) -> Value {
+    let curve = response.curve();
+    match question {
+        Question::ForcesAt(extensions) => Value::Forces(
+            extensions
+                .iter()
+                .map(|&dz| curve.force_at(dz).iter().map(|f| f / scale).collect())
+                .collect(),
+        ),
+        Question::ExtensionsAt(forces) => Value::Extensions(
+            forces
+                .iter()
+                .map(|&f| curve.extension_at(f * scale))
+                .collect(),
+        ),
+        Question::PopOuts { .. } => Value::PopOuts {
+            jumps: response.jumps(Control::Force),
+            pop_outs: response.pop_outs(),
+        },
+        _ => Value::Curve(Box::new(response.clone())),
     }
-    at(0.5 * (lo + hi))
 }

@@ -14,7 +14,9 @@ use super::{Model, Response, Spring, check_samples, check_simple_target};
 /// force folds, where the helix force turns, are never pop-outs).
 ///
 /// The curve is sampled uniformly in extension from the rest state
-/// Δz = cos θ0 to the target; its last point is the target to rounding.
+/// Δz = cos θ0 to the target; its last point is the target (a force
+/// target exactly, the closed form meeting it to
+/// [`HelixModel::FORCE_ACCURACY`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct HelixModel {
     samples: usize,
@@ -99,24 +101,33 @@ impl Model for HelixModel {
             } else {
                 angle_between(spring.helix_angle(), theta_end, t)
             };
-            curve.push(ForcePoint {
-                extension: helix.extension(theta)?,
-                force: helix.force(theta).map_err(named)?,
-                parameter: theta,
-            });
-        }
-        if let Target::Force(f) = target {
-            let last = curve.force_scaled(curve.len() - 1).unwrap_or(f64::NAN);
-            let met = (last - f).abs() <= Self::FORCE_ACCURACY * f.abs().max(1.0);
-            if !met {
-                return Err(Error::OutsideModel {
-                    model: "helix",
-                    assumption: "a force target is met to 1e-13 max(f, 1) in double precision; at \
+            let mut force = helix.force(theta).map_err(named)?;
+            if let (Target::Force(f), true) = (target, i + 1 == self.samples) {
+                let met = (force / spring.force_scale() - f).abs()
+                    <= Self::FORCE_ACCURACY * f.abs().max(1.0);
+                if !met {
+                    return Err(Error::OutsideModel {
+                        model: "helix",
+                        assumption: "a force target is met to 1e-13 max(f, 1) in double precision; at \
                                  this force and stiffness the helix angle θ or the physical force \
                                  (2πn)²B·F is below the smallest normal double (2.2e-308) and has \
                                  fewer than 53 bits: use a smaller force or a larger stiffness",
-                });
+                    });
+                }
+                // the curve ends on the load asked, as the rod's does, so
+                // that it is read off there
+                force = stop;
             }
+            let extension = match (target, i + 1 == self.samples) {
+                // cos(acos Δz) to rounding: the curve ends on it
+                (Target::Extension(dz), true) => dz,
+                _ => helix.extension(theta)?,
+            };
+            curve.push(ForcePoint {
+                extension,
+                force,
+                parameter: theta,
+            });
         }
         let loops = vec![Some(spring.coils()); curve.len()];
         Response::new(

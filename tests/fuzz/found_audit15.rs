@@ -111,9 +111,15 @@ fn a_tolerance_too_loose_for_the_rod_names_the_users_value() {
             }
         }
     }
+    // at the loosest tolerance the shape is the rod's; the curve may be the
+    // helix's, certified by its end layers (9.9e-2 for this spring at 0.3)
     for q in [&curve, &shape] {
         let a = spring.answer(q, 0.1).unwrap();
-        assert!(matches!(a.choice(), Choice::Rod { .. }), "{q}: {a}");
+        let rod = matches!(a.choice(), Choice::Rod { .. });
+        assert!(
+            rod || (q == &curve && a.choice() == Choice::Helix),
+            "{q}: {a}"
+        );
         assert!(a.meets_tolerance(), "{q}: {a}");
     }
     // the spring constant's tolerance is relative, and any is met
