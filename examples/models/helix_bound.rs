@@ -22,7 +22,9 @@
 use hockle::Stiffness;
 use hockle::curve::{ForceExtension, ForcePoint};
 use hockle::helix::Helix;
-use hockle::spring::{Choice, HelixModel, Model, Question, Reason, RodModel, SetAside, Spring};
+use hockle::spring::{
+    Choice, HelixModel, Model, Question, Reason, Response, RodModel, SetAside, Spring,
+};
 
 use crate::measure::{bare, both_ways, drawn, grid_scenes};
 
@@ -89,12 +91,7 @@ pub fn run(args: &[String]) -> Result<(), String> {
         let stiffness = Stiffness::nikolai(a_over_b, nu).map_err(|e| e.to_string())?;
         let s = Spring::from_degrees(n, theta0, stiffness).map_err(|e| e.to_string())?;
         let scale = s.force_scale();
-        let reference = RodModel::default()
-            .tolerance(1e-8)
-            .intervals(10 * n as usize)
-            .points(7)
-            .pull(&s, 1.0)
-            .map_err(|e| e.to_string())?;
+        let reference = converged(&s)?;
         if !reference.reached_target() {
             println!("{set},{n},{theta0},{a_over_b},{nu},stopped,,,,,,,");
             continue;
@@ -176,12 +173,7 @@ fn end_layer_distance(spring: &Spring) -> Result<Option<f64>, String> {
         .map_err(|e| e.to_string())?;
     let short_spring =
         Spring::new(SHORT, spring.helix_angle(), spring.stiffness()).map_err(|e| e.to_string())?;
-    let short = RodModel::default()
-        .tolerance(1e-8)
-        .intervals(10 * SHORT as usize)
-        .points(7)
-        .pull(&short_spring, 1.0)
-        .map_err(|e| e.to_string())?;
+    let short = converged(&short_spring)?;
     let rises = helix
         .curve()
         .points()
@@ -204,4 +196,15 @@ fn end_layer_distance(spring: &Spring) -> Result<Option<f64>, String> {
         });
     }
     Ok(Some(both_ways(&bare(helix.curve()), &bare(&predicted))))
+}
+
+/// The rod pulled to F/((2πn)²B) = 1 converged: 10 intervals per coil,
+/// m = 7, tolerance 1e-8 (the reference of `tests/spring/choice.rs`).
+fn converged(spring: &Spring) -> Result<Response, String> {
+    RodModel::default()
+        .tolerance(1e-8)
+        .intervals(10 * spring.coils() as usize)
+        .points(7)
+        .pull(spring, 1.0)
+        .map_err(|e| e.to_string())
 }

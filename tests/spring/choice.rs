@@ -240,44 +240,52 @@ fn the_helix_answers_a_long_slinky_within_its_estimate() {
     // values read off the helix: each (Δz, F) within the estimate of the
     // reference's curve (forces under extension control: the helix is
     // pulled to Δz = 0.5, the short rod to the helix's force there)
-    let forces = [0.05, 0.4, 0.9];
-    let a = s
-        .answer(&Question::ExtensionsAt(forces.to_vec()), tol)
-        .unwrap();
-    assert_eq!(a.choice(), Choice::Helix, "{a}");
-    let Value::Extensions(x) = a.value() else {
-        panic!("{a}");
-    };
-    for (f, dz) in forces.iter().zip(x) {
-        assert_eq!(dz.len(), 1, "{f}: {dz:?}");
-        let d = exact.distance_to([dz[0], *f]);
-        assert!(d <= a.estimated_error(), "F = {f}: {d:e} vs {a}");
-    }
-    let extensions = [0.4, 0.45, 0.5];
-    let a = s
-        .answer(&Question::ForcesAt(extensions.to_vec()), tol)
-        .unwrap();
-    assert_eq!(a.choice(), Choice::Helix, "{a}");
-    let Value::Forces(f) = a.value() else {
-        panic!("{a}");
-    };
-    for (dz, f) in extensions.iter().zip(f) {
-        assert_eq!(f.len(), 1, "{dz}: {f:?}");
-        let d = exact.distance_to([*dz, f[0]]);
-        assert!(d <= a.estimated_error(), "Δz = {dz}: {d:e} vs {a}");
+    for question in [
+        Question::ExtensionsAt(vec![0.05, 0.4, 0.9]),
+        Question::ForcesAt(vec![0.4, 0.45, 0.5]),
+    ] {
+        let a = s.answer(&question, tol).unwrap();
+        assert_eq!(a.choice(), Choice::Helix, "{question:?}: {a}");
+        // one value per value asked (the helix does not fold), as (Δz, F)
+        let points: Vec<[f64; 2]> = match (&question, a.value()) {
+            (Question::ExtensionsAt(forces), Value::Extensions(x)) => {
+                forces.iter().zip(x).map(|(f, dz)| [dz[0], *f]).collect()
+            }
+            (Question::ForcesAt(extensions), Value::Forces(f)) => extensions
+                .iter()
+                .zip(f)
+                .map(|(dz, f)| [*dz, f[0]])
+                .collect(),
+            _ => panic!("{question:?}: {a}"),
+        };
+        for p in points {
+            let d = exact.distance_to(p);
+            assert!(d <= a.estimated_error(), "{p:?}: {d:e} vs {a}");
+        }
     }
 
-    let a = s
-        .answer(&Question::Curve { max_force: 1.0 }, 5.5e-3)
-        .unwrap();
+    let (helix, _, a) = set_aside(&s, &Question::Curve { max_force: 1.0 }, 5.5e-3);
+    let SetAside::EndLayers { estimate } = helix else {
+        panic!("{a}");
+    };
+    assert!(estimate > 5.5e-3 && estimate < 1e-2, "{a}");
+}
+
+/// Why the rod, not the helix nor the elastica, answers `question` of
+/// `spring` at `tolerance` (helix, elastica), and the answer.
+fn set_aside(
+    spring: &Spring,
+    question: &Question,
+    tolerance: f64,
+) -> (SetAside, SetAside, hockle::spring::Answer) {
+    let a = spring.answer(question, tolerance).unwrap();
     let Reason::RodNeeded {
-        helix: SetAside::EndLayers { estimate },
-        ..
+        helix, elastica, ..
     } = a.reason()
     else {
         panic!("{a}");
     };
-    assert!(estimate > 5.5e-3 && estimate < 1e-2, "{a}");
+    (helix, elastica, a)
 }
 
 /// Castigliano's integral 1/k = ∫ Σ (M·dᵢ)²/Kᵢ ds / F², M = (r(s) − r(0)) × k,
@@ -342,13 +350,7 @@ fn spring_constant_is_the_rods_slope_at_rest() {
 #[test]
 fn why_is_typed_and_said() {
     let s = Spring::paper();
-    let a = s.answer(&Question::Curve { max_force: 0.3 }, 1e-2).unwrap();
-    let Reason::RodNeeded {
-        helix, elastica, ..
-    } = a.reason()
-    else {
-        panic!("{a}");
-    };
+    let (helix, elastica, a) = set_aside(&s, &Question::Curve { max_force: 0.3 }, 1e-2);
     // the helix's end layers, measured on a 2-coil rod, are too large
     let SetAside::EndLayers { estimate } = helix else {
         panic!("{a}");
@@ -358,24 +360,15 @@ fn why_is_typed_and_said() {
     // the rod runs at half the tolerance (its estimate is reported doubled)
     assert!(a.why().starts_with("rod at tolerance 5e-3"), "{}", a.why());
     // the pop-outs are never the helix's, which has none
-    let a = s
-        .answer(&Question::PopOuts { max_force: 0.3 }, 1e-2)
-        .unwrap();
-    let Reason::RodNeeded { helix, .. } = a.reason() else {
-        panic!("{a}");
-    };
+    let (helix, _, a) = set_aside(&s, &Question::PopOuts { max_force: 0.3 }, 1e-2);
     let SetAside::LoadedOnItsAxis { slope_ratio } = helix else {
         panic!("{a}");
     };
     assert!((slope_ratio - 0.63).abs() < 0.01, "{a}");
     // the helix's force peaks at F/((2πn)²B) = 0.6586, within twice the
     // load (the first pop-out is at 0.60): no end layer is scaled
-    let a = s.answer(&Question::Curve { max_force: 0.4 }, 1e-1).unwrap();
-    let Reason::RodNeeded {
-        helix: SetAside::NearAPopOut { force },
-        ..
-    } = a.reason()
-    else {
+    let (helix, _, a) = set_aside(&s, &Question::Curve { max_force: 0.4 }, 1e-1);
+    let SetAside::NearAPopOut { force } = helix else {
         panic!("{a}");
     };
     assert!((force - 0.6586).abs() < 1e-3, "{a}");
@@ -384,25 +377,14 @@ fn why_is_typed_and_said() {
     // the helix was 1.6 times its end layers' estimate, so the 2-coil rod's
     // fold within twice the load sets the helix aside
     let near = spring(4, 88.987, 7.553, 0.112);
-    let a = near
-        .answer(&Question::Curve { max_force: 0.615 }, 1e-1)
-        .unwrap();
-    let Reason::RodNeeded {
-        helix: SetAside::NearAPopOut { force },
-        ..
-    } = a.reason()
-    else {
+    let (helix, _, a) = set_aside(&near, &Question::Curve { max_force: 0.615 }, 1e-1);
+    let SetAside::NearAPopOut { force } = helix else {
         panic!("{a}");
     };
     assert!((force - 0.70).abs() < 0.01, "{a}");
     // at 60° the flat spring starts cos 60° = 0.5 from the rest state
     let steep = spring(4, 60.0, 10.0, 0.05);
-    let a = steep
-        .answer(&Question::Curve { max_force: 0.3 }, 1e-2)
-        .unwrap();
-    let Reason::RodNeeded { elastica, .. } = a.reason() else {
-        panic!("{a}");
-    };
+    let (_, elastica, a) = set_aside(&steep, &Question::Curve { max_force: 0.3 }, 1e-2);
     let SetAside::MissesTheRestState { lower_bound } = elastica else {
         panic!("{a}");
     };
