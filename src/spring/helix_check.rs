@@ -64,9 +64,10 @@ pub(super) const SAFETY: f64 = 1.05;
 /// A saving only: a check run anyway would set the helix aside.
 const LEAST_SCALED_ERROR: f64 = 0.03;
 
-/// A pop-out may lie this close above a fold of the 2-coil rod or the
-/// helix's force maximum (module docs): where either is below this times
-/// the load, the helix is not certified. Measured: the first pop-out of a
+/// A spring's first pop-out may come this many times below the 2-coil
+/// rod's first fold or the helix's force maximum (module docs): where
+/// either is below this times the load, the helix is not certified.
+/// Measured (`examples/models --pop-out-margin`): the first pop-out of a
 /// spring without a helix force maximum was at least 0.67 times the 2-coil
 /// rod's first fold, and of one with a maximum at least 0.62 times that
 /// maximum (so 2 leaves a margin of a quarter over both); where the helix
