@@ -1,0 +1,167 @@
+//! Folds and cusps checked against their mesh: located again with every
+//! interval halved ([`CuspSearch::mesh_checked`], [`CuspSearch::cusp_mesh_checked`]).
+
+use super::{CUSP_NEWTON_TOLERANCE, CuspSearch, a_spring_parameter, a_tolerance, of_the_family};
+use crate::bvp::Solution;
+use crate::continuation::{Continuation, FoldContinuation};
+use crate::error::Result;
+use crate::rod::{NikolaiRod, Rod};
+#[cfg(doc)]
+use {super::Followed, crate::continuation::FoldPoint, crate::error::Error};
+
+/// Newton's iterations for a fold located on a finer mesh
+/// ([`CuspSearch::mesh_checked`]): from a coarse fold whose force is
+/// 0.016 off (the paper's spring's first pop-out carried to F/((2πn)²B) ≈
+/// 4.7 on 48 intervals) the damped iteration on 96 intervals takes 14.
+const FINER_NEWTON: u32 = 40;
+
+/// Newton's tolerance on a finer mesh ([`CuspSearch::mesh_checked`]) as a
+/// fraction of the force tolerance (within [1e-12, 1e-8]): the extended
+/// problem's rounding floor rises with the intervals (measured: 1.1e-9 on
+/// 384 intervals at F/((2πn)²B) ≈ 5), and a correction a thousandth of the
+/// force tolerance moves the fold's force by far less than the tolerance.
+const FINER_NEWTON_FRACTION: f64 = 1e-3;
+
+impl CuspSearch {
+    /// The most halvings of [`mesh_checked`](Self::mesh_checked).
+    pub const MAX_HALVINGS: u32 = 3;
+
+    /// A fold of `family` (as [`carry`](Self::carry) returns one) checked
+    /// against its mesh: located again with every interval halved
+    /// ([`FoldContinuation::locate_on`]: same parameters, F/((2πn)²B) and
+    /// the shape free), and halved again while its scaled force moved by
+    /// more than `tol`, at most [`MAX_HALVINGS`](Self::MAX_HALVINGS) times.
+    ///
+    /// The answer is the fold on the finest mesh; [`MeshChecked::change`] is
+    /// how far the force moved in the last halving. With m Gauss points the
+    /// fold's force converges as h^(2m) once the mesh resolves the loops, so
+    /// the change overestimates the finer fold's error by up to 2^(2m) − 1;
+    /// a change above `tol` after the last halving says the tolerance was
+    /// not met. Measured (docs/ACCURACY.md): the paper's spring's first
+    /// pop-out carried to (89.944°, 22.075, −0.029), where it peaks at
+    /// F/((2πn)²B) ≈ 4.74, sits 0.016 above its converged force on the
+    /// default 48 intervals.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] for a `tol` that is not positive and
+    /// finite; [`Error::LengthMismatch`] for a `fold` that is not a
+    /// solution of a [`NikolaiRod`]; a Newton error where the finer fold is
+    /// not found from the coarser one.
+    pub fn mesh_checked(
+        &self,
+        family: &NikolaiRod,
+        fold: &Solution,
+        tol: f64,
+    ) -> Result<MeshChecked> {
+        a_tolerance(
+            "fold force tolerance",
+            tol,
+            "a positive finite change of F/((2πn)²B)",
+        )?;
+        of_the_family(fold)?;
+        let locate = FoldContinuation::new(
+            NikolaiRod::FORCE_SCALED,
+            Continuation::new(Rod::THETA0).solver(
+                self.solver(family)?
+                    .max_newton(FINER_NEWTON)
+                    .newton_tolerance((FINER_NEWTON_FRACTION * tol).clamp(1e-12, 1e-8)),
+            ),
+        );
+        halved_until(&locate, family, fold, NikolaiRod::FORCE_SCALED, tol)
+    }
+
+    /// A cusp of the cascade (the [`FoldPoint::extended`] of a
+    /// [`Followed::Cusp`] met by [`follow`](Self::follow) in `parameter`)
+    /// checked against its mesh: the cusp is a fold in `parameter` of the
+    /// fold problem ([`crate::continuation::FoldProblem`]; what
+    /// [`cusp_curve`](Self::cusp_curve) continues), located again with every
+    /// interval halved ([`FoldContinuation::locate_on`], the other
+    /// parameters fixed) while its `parameter` moved by more than `tol`, at
+    /// most [`MAX_HALVINGS`](Self::MAX_HALVINGS) times. The answer's
+    /// [`MeshChecked::fold`] is the fold problem's solution at the cusp on
+    /// the finest mesh, its [`MeshChecked::change`] the move of `parameter`
+    /// (θ0 in radians, ln A/B or ν) in the last halving. Measured: the
+    /// paper's spring's first pop-out, its cusp in θ0 found on 24 intervals,
+    /// moves by 5.2e-10 rad to 48 and 1e-12 to 96 (0.3 s and 0.7 s).
+    ///
+    /// # Errors
+    /// [`Error::InvalidCount`] for another `parameter` than
+    /// [`Rod::THETA0`], [`NikolaiRod::LN_A_OVER_B`] or [`NikolaiRod::NU`];
+    /// [`Error::InvalidArgument`] for a `tol` that is not positive and
+    /// finite; a length error for a `cusp` that is not a solution of the
+    /// family's fold problem; a Newton error where the finer cusp is not
+    /// found from the coarser one.
+    pub fn cusp_mesh_checked(
+        &self,
+        family: &NikolaiRod,
+        cusp: &Solution,
+        parameter: usize,
+        tol: f64,
+    ) -> Result<MeshChecked> {
+        a_spring_parameter("cusp parameter", parameter)?;
+        a_tolerance(
+            "cusp tolerance",
+            tol,
+            "a positive finite change of the cusp's parameter",
+        )?;
+        // (the fold problem's continuation parameter, fixed here)
+        let fixed = if parameter == Rod::THETA0 {
+            NikolaiRod::LN_A_OVER_B
+        } else {
+            Rod::THETA0
+        };
+        let problem = crate::continuation::FoldProblem::new(family, &[]);
+        let locate = FoldContinuation::new(
+            parameter,
+            Continuation::new(fixed).solver(
+                self.solver(family)?
+                    .free_parameters(&[NikolaiRod::FORCE_SCALED])
+                    .max_newton(FINER_NEWTON)
+                    .newton_tolerance(CUSP_NEWTON_TOLERANCE),
+            ),
+        );
+        halved_until(&locate, &problem, cusp, parameter, tol)
+    }
+}
+
+/// `start` located again by `locate` on its mesh halved, while the
+/// parameter `watched` moves by more than `tol`, at most
+/// [`CuspSearch::MAX_HALVINGS`] times.
+fn halved_until<P: crate::bvp::Problem + ?Sized>(
+    locate: &FoldContinuation,
+    problem: &P,
+    start: &Solution,
+    watched: usize,
+    tol: f64,
+) -> Result<MeshChecked> {
+    let value = |s: &Solution| s.parameters()[watched];
+    let (mut fold, mut change, mut halvings) = (start.clone(), f64::INFINITY, 0);
+    while halvings < CuspSearch::MAX_HALVINGS && change > tol {
+        let finer = locate
+            .locate_on(problem, &fold, &fold.mesh().halved()?)?
+            .solution()
+            .clone();
+        change = (value(&finer) - value(&fold)).abs();
+        halvings += 1;
+        fold = finer;
+    }
+    Ok(MeshChecked {
+        fold,
+        change,
+        halvings,
+    })
+}
+
+/// A fold or a cusp checked against its mesh ([`CuspSearch::mesh_checked`],
+/// [`CuspSearch::cusp_mesh_checked`]).
+#[derive(Debug, Clone)]
+pub struct MeshChecked {
+    /// The fold on the finest mesh (a solution of the [`NikolaiRod`]; for
+    /// a cusp, of its fold problem).
+    pub fold: Solution,
+    /// How far the checked parameter moved between the last two meshes:
+    /// |ΔF|/((2πn)²B) for a fold, the cusp's parameter for a cusp.
+    pub change: f64,
+    /// How many times the mesh was halved.
+    pub halvings: u32,
+}
