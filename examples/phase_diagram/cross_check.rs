@@ -10,14 +10,16 @@
 //! (where the count read 0.1° either side differs: the reading's own
 //! error, docs/ACCURACY.md). Where a pull sees fewer, the reference
 //! spring's pop-outs are carried to the scene ([`CuspSearch::carry`]:
-//! their fold forces there without a pull): the scene is accounted for
+//! their fold forces there without a pull, each checked against its mesh
+//! as `--forces` does, `checked.rs`): the scene is accounted for
 //! when as many of them reach it as the diagram counts and as many of
 //! those peak below [`FORCE`] as the pull saw ([`Beyond`]).
 
 use std::error::Error;
 
-use hockle::rod::{CuspSearch, Followed, NikolaiRod, PhaseDiagram};
+use hockle::rod::{CuspSearch, Followed, PhaseDiagram};
 
+use super::checked::checked_force;
 use super::compute::{carry_search, reference_family};
 
 /// The example's error type.
@@ -155,7 +157,7 @@ fn beyond_the_pulls(
                 if let Followed::Reached(at) =
                     search.carry(&family, max, (t.to_radians(), a, nu))?.1
                 {
-                    reached = Some(at.parameters()[NikolaiRod::FORCE_SCALED]);
+                    reached = Some(checked_force(&search, &family, &at).force);
                     break;
                 }
             }

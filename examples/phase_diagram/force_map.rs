@@ -9,12 +9,17 @@
 //! its region on that line; the cells beyond it on the line are then
 //! carried from the reference one by one ([`CuspSearch::carry`], another
 //! path), and `-` is left where neither path reaches the fold: "none on
-//! these paths" (a region need not be convex).
+//! these paths" (a region need not be convex). Every fold reached is then
+//! checked against its mesh (`checked.rs`: located again with every
+//! interval halved until its force moves by at most 1e-6, at most three
+//! times): the map's forces are the finest mesh's.
 
 use std::error::Error;
 
 use hockle::bvp::Solution;
 use hockle::rod::{CuspSearch, Followed, NikolaiRod, Rod};
+
+use super::checked::{CheckedForce, checked_force};
 
 /// The example's error type.
 type Fallible<T> = Result<T, Box<dyn Error + Send + Sync>>;
@@ -23,11 +28,6 @@ type Fallible<T> = Result<T, Box<dyn Error + Send + Sync>>;
 pub const THETA0_DEG: [f64; 8] = [87.0, 87.4, 87.8, 88.2, 88.6, 89.0, 89.4, 89.8];
 /// See [`THETA0_DEG`].
 pub const NU: [f64; 6] = [-0.3, -0.2, -0.1, 0.0, 0.1, 0.2];
-
-/// The force F/((2πn)²B) of a fold solution of the family.
-fn force(fold: &Solution) -> f64 {
-    fold.parameters()[NikolaiRod::FORCE_SCALED]
-}
 
 /// The fold `at` followed in `parameter` to `to`, if it gets there.
 fn leg(
@@ -83,8 +83,8 @@ fn sides(values: &[f64], from: f64) -> [Vec<(usize, f64)>; 2] {
     [up, down]
 }
 
-/// The force of one fold at every grid point, `None` where it is not
-/// reached: `map[j][i]` at (θ0 = [`THETA0_DEG`]`[i]`, ν = [`NU`]`[j]`).
+/// One fold at every grid point on `search`'s mesh, `None` where it is
+/// not reached: `map[j][i]` at (θ0 = [`THETA0_DEG`]`[i]`, ν = [`NU`]`[j]`).
 /// From the fold at the reference's ν, walked in ν both ways at the grid's
 /// θ0 nearest the reference's, then along each row in θ0 both ways.
 fn map_fold(
@@ -92,7 +92,7 @@ fn map_fold(
     family: &NikolaiRod,
     fold: &Solution,
     a_over_b: f64,
-) -> Fallible<Vec<Vec<Option<f64>>>> {
+) -> Fallible<Vec<Vec<Option<Solution>>>> {
     let p = fold.parameters();
     let (theta0, nu) = (p[Rod::THETA0].to_degrees(), p[NikolaiRod::NU]);
     let column = THETA0_DEG
@@ -116,7 +116,7 @@ fn map_fold(
             for way in sides(&THETA0_DEG, column) {
                 let way = way.into_iter().map(|(i, t)| (i, t.to_radians()));
                 for (i, at) in walk(search, family, row_start.clone(), Rod::THETA0, way)? {
-                    map[j][i] = at.as_ref().map(force);
+                    map[j][i] = at;
                 }
             }
         }
@@ -129,28 +129,52 @@ fn map_fold(
                 && let (_, Followed::Reached(at)) =
                     search.carry(family, fold, (t.to_radians(), a_over_b, nu))?
             {
-                map[j][i] = Some(force(&at));
+                map[j][i] = Some(*at);
             }
         }
     }
     Ok(map)
 }
 
-/// Prints `force_map theta0=<deg> nu=<x> pop_out=<i> max=<F> min=<F>` for
-/// every grid point and pop-out (`-` where the fold is not reached), and
-/// a Markdown table per pop-out on standard error ("max (max − min)").
+/// [`map_fold`] with every fold reached checked against its mesh.
+fn checked_map(
+    search: &CuspSearch,
+    family: &NikolaiRod,
+    fold: &Solution,
+    a_over_b: f64,
+) -> Fallible<Vec<Vec<Option<CheckedForce>>>> {
+    Ok(map_fold(search, family, fold, a_over_b)?
+        .into_iter()
+        .map(|row| {
+            row.into_iter()
+                .map(|cell| cell.map(|at| checked_force(search, family, &at)))
+                .collect()
+        })
+        .collect())
+}
+
+/// Prints `force_map theta0=<deg> nu=<x> pop_out=<i> max=<F> min=<F>
+/// change=<ΔF>` for every grid point and pop-out (`-` where the fold is not
+/// reached, ΔF `-` where neither is; ΔF the larger of the two folds' moves in their last halving,
+/// above 1e-6 where three halvings did not get there, `inf` where the fold
+/// was not found on the halved mesh), and a Markdown table per pop-out on
+/// standard error ("max (max − min)", marked `*` where a fold's force is
+/// not resolved to 1e-6). The two folds of a pop-out are mapped in two
+/// threads.
 pub fn print(
     search: &CuspSearch,
     family: &NikolaiRod,
     pops: &[[Solution; 2]],
     a_over_b: f64,
 ) -> Fallible<()> {
-    let show = |f: Option<f64>| f.map_or("-".to_string(), |v| format!("{v:.6}"));
+    let show = |f: Option<CheckedForce>| f.map_or("-".to_string(), |v| format!("{:.6}", v.force));
     for (k, [max, min]) in pops.iter().enumerate() {
-        let (up, down) = (
-            map_fold(search, family, max, a_over_b)?,
-            map_fold(search, family, min, a_over_b)?,
-        );
+        let (up, down) = std::thread::scope(|s| {
+            let up = s.spawn(|| checked_map(search, family, max, a_over_b));
+            let down = checked_map(search, family, min, a_over_b);
+            (up.join().expect("no panic"), down)
+        });
+        let (up, down) = (up?, down?);
         eprintln!(
             "\npop-out {}: maximum force (hysteresis: maximum − minimum)\n",
             k + 1
@@ -162,15 +186,28 @@ pub fn print(
             let mut cells = Vec::new();
             for (i, &t) in THETA0_DEG.iter().enumerate() {
                 let (a, b) = (up[j][i], down[j][i]);
+                let change = [a, b]
+                    .iter()
+                    .flatten()
+                    .map(|f| f.change)
+                    .reduce(f64::max)
+                    .map_or("-".to_string(), |c| format!("{c:.1e}"));
                 println!(
-                    "force_map theta0={t} nu={nu} pop_out={} max={} min={}",
+                    "force_map theta0={t} nu={nu} pop_out={} max={} min={} change={change}",
                     k + 1,
                     show(a),
                     show(b)
                 );
+                let mark = if [a, b].iter().flatten().all(CheckedForce::resolved) {
+                    ""
+                } else {
+                    "*"
+                };
                 cells.push(match (a, b) {
-                    (Some(a), Some(b)) => format!("{a:.3} ({:.3})", a - b),
-                    (Some(a), None) => format!("{a:.3} (?)"),
+                    (Some(a), Some(b)) => {
+                        format!("{:.3} ({:.3}){mark}", a.force, a.force - b.force)
+                    }
+                    (Some(a), None) => format!("{:.3} (?){mark}", a.force),
                     _ => "–".to_string(),
                 });
             }

@@ -7,6 +7,7 @@
 //! cargo run --release --example phase_diagram -- --coils 8 --extend docs/data/phase_diagram_n8.csv
 //! cargo run --release --example phase_diagram -- --check   # convergence, docs/ACCURACY.md
 //! cargo run --release --example phase_diagram -- --scene 89.8,10,0.05 [--scene …] [--pull F] [--forces]
+//! cargo run --release --example phase_diagram -- --coils 5 --scene 89,10,0.05 --fold-cusps
 //! ```
 //!
 //! Without `--compute`, n = 4 is read from the committed diagram
@@ -56,9 +57,10 @@
 //! `--force-map` maps the reference pop-outs' maximum and minimum forces
 //! over a grid of (θ0, ν) at A/B = 10 (`force_map.rs`): one line per grid
 //! point and pop-out, `force_map theta0=<deg> nu=<x> pop_out=<i> max=<F>
-//! min=<F>` (`-` where the fold is reached neither along the grid's lines
-//! nor by a carry of its own), and a Markdown table per pop-out on standard
-//! error.
+//! min=<F> change=<ΔF>` (`-` where the fold is reached neither along the
+//! grid's lines nor by a carry of its own; every fold reached checked
+//! against its mesh as `--forces` does, ΔF as there), and a Markdown table
+//! per pop-out on standard error.
 //!
 //! `--cross-check` pulls a coarse grid over both planes (θ0 86–89.8°, A/B
 //! 1–100 at ν = 0.05, ν −0.2–0.3 at A/B = 10) to F/((2πn)²B) = 3 and
@@ -67,7 +69,13 @@
 //! sees fewer, the reference's pop-outs are carried to the scene and a
 //! line `beyond … carried_max=<F;…> vanished=<k> accounted=<yes|partly|no>`
 //! says whether those that peak above the pull's force make up the
-//! difference.
+//! difference (the carried forces checked against their mesh as
+//! `--forces` does).
+//!
+//! `--fold-cusps` (with `--scene`, any n, no diagram read) pulls each scene
+//! on the lines' 24 intervals and follows each pop-out's two folds in θ0
+//! both ways to their first cusp (`fold_cusps.rs`): the cusps a reading
+//! crosses, and whether a fold pair is born or lost across each.
 //!
 //! `--scene THETA0_DEG,A_OVER_B,NU` (repeatable) prints one line per scene,
 //! `scene theta0=<deg> a_over_b=<x> nu=<x> pop_outs=<count>`, read off the
@@ -87,14 +95,10 @@ use std::path::PathBuf;
 use hockle::bvp::Solution;
 use hockle::rod::{Fixed, Followed, NikolaiRod, PhaseDiagram, Rod};
 
-/// How far a carried fold's force F/((2πn)²B) may move when its mesh is
-/// halved (`--forces`).
-const FORCE_TOLERANCE: f64 = 1e-6;
-
 /// The committed diagram of n = 4.
 const N4: &str = include_str!("../../docs/data/phase_diagram_n4.csv");
 fn usage() -> String {
-    "usage: phase_diagram [--coils N] [--out DIR] [--compute | --extend CSV | --check] [--scene THETA0_DEG,A_OVER_B,NU]… [--pull F] [--forces] [--force-map] [--cross-check]".into()
+    "usage: phase_diagram [--coils N] [--out DIR] [--compute | --extend CSV | --check] [--scene THETA0_DEG,A_OVER_B,NU]… [--pull F] [--forces] [--force-map] [--cross-check] [--fold-cusps]".into()
 }
 
 #[path = "../support/exit.rs"]
@@ -116,6 +120,7 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
     let mut carry = false;
     let mut map = false;
     let mut cross = false;
+    let mut cusps = false;
     let mut extend: Option<PathBuf> = None;
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
@@ -141,6 +146,7 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
             "--forces" => carry = true,
             "--force-map" => map = true,
             "--cross-check" => cross = true,
+            "--fold-cusps" => cusps = true,
             "--coils" => {
                 let v = args.next().ok_or("--coils needs a number")?;
                 coils = v
@@ -184,6 +190,12 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
         check(t > 0.0 && t < 90.0, "θ0 must be in (0°, 90°)")?;
         check(a > 0.0 && a.is_finite(), "A/B must be finite and positive")?;
         check(nu > -1.0 && nu < 0.5, "ν must be in (−1, 0.5)")?;
+    }
+    if cusps {
+        for &scene in &scenes {
+            fold_cusps::print(coils, scene)?;
+        }
+        return Ok(());
     }
     let committed = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
         .join("docs/data")
@@ -309,19 +321,11 @@ fn carry_to_scene(
         for fold in pair {
             let (leg, followed) = search.carry(family, fold, (t.to_radians(), a, nu))?;
             match followed {
-                Followed::Reached(at) => match search.mesh_checked(family, &at, FORCE_TOLERANCE) {
-                    Ok(checked) => {
-                        forces.push(checked.fold.parameters()[NikolaiRod::FORCE_SCALED]);
-                        change = change.max(checked.change);
-                    }
-                    // the fold on the finer mesh is not found from this
-                    // one: its force is not resolved here
-                    Err(e) => {
-                        eprintln!("  pop-out {}: the fold's mesh check failed: {e}", i + 1);
-                        forces.push(at.parameters()[NikolaiRod::FORCE_SCALED]);
-                        change = f64::INFINITY;
-                    }
-                },
+                Followed::Reached(at) => {
+                    let checked = checked_force(&search, family, &at);
+                    forces.push(checked.force);
+                    change = change.max(checked.change);
+                }
                 Followed::Cusp(c) => {
                     let (name, value) = match leg {
                         Rod::THETA0 => ("theta0", c.parameter().to_degrees()),
@@ -350,14 +354,17 @@ fn carry_to_scene(
     Ok(())
 }
 
+mod checked;
 mod compute;
 mod convergence;
 mod cross_check;
+mod fold_cusps;
 mod pulls;
 
 mod force_map;
 mod svg;
 
+use checked::checked_force;
 use convergence::check;
 
 use compute::{A_OVER_B, HALF_PI, carry_search, compute, reference_family};
