@@ -248,17 +248,45 @@ pub(crate) fn reference_family(coils: u32) -> Result<NikolaiRod, Box<dyn Error +
     Ok(NikolaiRod::new(rod, NU)?)
 }
 
-/// Every cusp line of reference pop-out `i`, from its maximum-force fold
-/// at the reference spring.
+/// Where pop-out `pair` (its maximum- and minimum-force folds) vanishes
+/// going down in θ0 from its spring: each fold followed down to its first
+/// cusp, and of the two the one at the lower θ0. Where both meet one
+/// cusp, that is where the pop-out's two folds meet. Where they meet
+/// different cusps, the folds change partners on the way (a fold pair is
+/// lost at the higher cusp and another born just below it, so the count
+/// does not change there; docs/ACCURACY.md, "n = 5"), and the pop-out
+/// vanishes at the lower one. At the reference spring the two differ for
+/// n = 5 (pop-out 3: its maximum at 89.743°, its minimum at 87.978°, the
+/// pop-out's boundary) and n = 6, 7, 8 (the maximum's the lower: the same
+/// lines as before this rule); `None` where neither meets a cusp above
+/// 45°.
+pub(crate) fn vanishing_cusp(
+    search: &CuspSearch,
+    family: &NikolaiRod,
+    pair: &[Solution; 2],
+) -> Result<Option<FoldPoint>, Box<dyn Error + Send + Sync>> {
+    let mut lowest: Option<FoldPoint> = None;
+    for fold in pair {
+        if let Followed::Cusp(c) = search.follow(family, fold, Rod::THETA0, 45_f64.to_radians())?
+            && lowest
+                .as_ref()
+                .is_none_or(|l| c.parameter() < l.parameter())
+        {
+            lowest = Some(*c);
+        }
+    }
+    Ok(lowest)
+}
+
+/// Every cusp line of reference pop-out `i`, from where it vanishes going
+/// down in θ0 ([`vanishing_cusp`]).
 fn pop_out_lines(
     coils: u32,
     i: usize,
-    max_fold: &Solution,
+    pair: &[Solution; 2],
 ) -> Result<Vec<CuspLine>, Box<dyn Error + Send + Sync>> {
     let family = reference_family(coils)?;
-    let Followed::Cusp(cusp) =
-        line_search().follow(&family, max_fold, Rod::THETA0, 45_f64.to_radians())?
-    else {
+    let Some(cusp) = vanishing_cusp(&line_search(), &family, pair)? else {
         return Err(format!("pop-out {i}: no cusp between θ0 = 45° and {THETA0_DEG}°").into());
     };
     lines_through(&family, i, cusp.extended(), A_OVER_B)
@@ -289,8 +317,10 @@ fn lines_through(
     lines.push(both_ways(i, Fixed::AOverB(a_over_b), down, up));
     // The reading grid: from (A_MAX, 0.05) along ν to each ν, then in A/B
     // down to the tip; where the pop-out's region ends below A/B = 100 at
-    // ν = 0.05 (n = 5: an island about the reference, closed by tips in
-    // A/B and in ν), from c0 instead, then in A/B both ways.
+    // ν = 0.05 (an island about the reference, closed by tips in A/B and
+    // in ν: n = 5's third pop-out traced from its maximum-force fold's
+    // cusp, before `vanishing_cusp`), from c0 instead, then in A/B both
+    // ways.
     lines.extend(match end {
         Some(end) => grid(&search, family, i, &end, Grid::FromAMax)?,
         None => grid(&search, family, i, c0, Grid::FromCusp)?,
@@ -494,9 +524,7 @@ pub(crate) fn compute(
             "n = {coils}: {} pop-outs at θ0 = {THETA0_DEG}°, A/B = {A_OVER_B}, ν = {NU}",
             pops.len()
         );
-        lines.extend(in_parallel(&pops, |i, pair| {
-            pop_out_lines(coils, i, &pair[0])
-        })?);
+        lines.extend(in_parallel(&pops, |i, pair| pop_out_lines(coils, i, pair))?);
     }
     let listed: Vec<(f64, f64)> = SEEDS
         .iter()

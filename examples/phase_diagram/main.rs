@@ -12,10 +12,12 @@
 //!
 //! Without `--compute`, n = 4 is read from the committed diagram
 //! `docs/data/phase_diagram_n4.csv` (what `--compute` writes), other n from
-//! `docs/data/phase_diagram_n<N>.csv` where committed (n = 2, 3, 6, 7, 8), else
+//! `docs/data/phase_diagram_n<N>.csv` where committed (n = 2, 3, 5, 6, 7, 8), else
 //! computed. `--compute` pulls the paper's spring at θ0 = 89.8°, A/B = 10,
-//! ν = 0.05 (n coils), continues each pop-out's maximum-force fold down in
-//! θ0 to its cusp, and from there traces the curve of cusps in A/B (at
+//! ν = 0.05 (n coils), continues each pop-out's two folds down in θ0 to
+//! where it vanishes (the lower of their first cusps: where they differ,
+//! the folds change partners on the way), and from there traces the curve
+//! of cusps in A/B (at
 //! ν = 0.05 and at the other ν of the reading grid, reached along A/B =
 //! 100) and in ν (at A/B = 10): `phase_diagram_n<N>.csv` and `.svg` in the
 //! output folder (default `$CARGO_TARGET_DIR/hockle`, else `target/hockle`).
@@ -87,7 +89,8 @@
 //! here (no committed one for n) is first checked against pulls to
 //! F/((2πn)²B) = 3 at 14 scenes about the reference (`CHECK_SCENES`);
 //! where a pull sees more pop-outs than a complete diagram counts, every
-//! scene prints `pop_outs=unknown` and why (n = 5, docs/ACCURACY.md).
+//! scene prints `pop_outs=unknown` and why (n = 5 did, when its lines were
+//! traced from its maximum-force folds alone: docs/ACCURACY.md, "n = 5").
 
 use std::error::Error;
 use std::path::PathBuf;
@@ -220,7 +223,7 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
         };
         if !force {
             eprintln!(
-                "no committed diagram for n = {coils} ({} not found; committed: n = 2, 3, 4, 6, 7, 8): \
+                "no committed diagram for n = {coils} ({} not found; committed: n = 2, 3, 4, 5, 6, 7, 8): \
                  computing it, which takes tens of minutes or more (n = 7: 18 minutes; n = 9 had \
                  not finished after 50 minutes on a two-core machine)",
                 committed.display()

@@ -30,8 +30,10 @@ pub(crate) const CHECK_SCENES: [Scene; 14] = [
 /// docs check against pulls) against pulls to F/((2πn)²B) = 3 at
 /// [`CHECK_SCENES`]: a pull that sees more pop-outs than a complete
 /// diagram counts (which counts them at any force) contradicts it. n = 5
-/// does (its pop-out 2 closes at tips about the reference while pulls away
-/// from it still lose a fourth loop: folds that re-pair rather than meet).
+/// did when its third pop-out was traced from its maximum-force fold's
+/// cusp (an island about the reference, while pulls away from it still
+/// lose a fourth loop: folds that change partners rather than meet;
+/// [`super::compute::vanishing_cusp`]).
 /// An incomplete diagram ([`PhaseDiagram::is_complete`]) counts a lower
 /// bound, which more pop-outs do not contradict. Returns why, where
 /// contradicted.

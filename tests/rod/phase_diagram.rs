@@ -471,6 +471,37 @@ fn direct_pulls_see_the_n7_pop_outs_the_diagram_predicts() {
     }
 }
 
+/// n = 5 (`docs/data/phase_diagram_n5.csv`, examples/phase_diagram
+/// `--coils 5 --compute`): its third pop-out's maximum-force fold meets a
+/// cusp at 89.743° going down from the reference spring and its
+/// minimum-force fold one at 87.978°; the pop-out vanishes at the lower
+/// (the folds change partners at the higher). A diagram traced from the
+/// higher (an island about the reference) counted 1 at (88°, 10) and 3 at
+/// (89°, 10) where pulls see 2 and 4. Scenes at least 0.1° from every
+/// line, pulled to F/((2πn)²B) = 3 on 48 intervals: 4, 2, 1, 0 pop-outs
+/// at A/B = 10, 4 at A/B = 12 (beyond the island) and 1 at ν = 0.2.
+#[test]
+fn direct_pulls_see_the_n5_pop_outs_the_diagram_predicts() {
+    let d =
+        PhaseDiagram::from_csv(5, include_str!("../../docs/data/phase_diagram_n5.csv")).unwrap();
+    assert!(d.is_complete());
+    for (t, a, nu) in [
+        (89.0, 10.0, 0.05),
+        (88.25, 10.0, 0.05),
+        (87.5, 10.0, 0.05),
+        (86.5, 10.0, 0.05),
+        (89.8, 12.0, 0.05),
+        (89.5, 10.0, 0.2),
+    ] {
+        let predicted = predicted_away_from_lines(&d, t, a, nu);
+        assert_eq!(
+            pulled_pop_outs_on(5, t, a, nu, 48, 3.0),
+            predicted,
+            "scene θ0 = {t}°, A/B = {a}, ν = {nu}"
+        );
+    }
+}
+
 /// The paper's spring as a `NikolaiRod`, the default search, and its
 /// three pop-outs (pulled to F/((2πn)²B) = 3 on the search's mesh).
 fn paper_pop_outs() -> (NikolaiRod, CuspSearch, Vec<[hockle::bvp::Solution; 2]>) {

@@ -225,7 +225,7 @@ impl PhaseDiagram {
     /// Whether the lines map every loop but the last: n − 1 pop-outs, as
     /// many as a spring of n coils can have. The lines are traced from the
     /// pop-outs of a reference spring (`examples/phase_diagram`: θ0 = 89.8°,
-    /// A/B = 10, ν = 0.05), which for n = 2, 3, 4, 6 has n − 1; where it has
+    /// A/B = 10, ν = 0.05), which for n = 2, 3, 4, 5, 6 has n − 1; where it has
     /// fewer (n = 8: 3 of 7 loops pop out there, the others unloop without
     /// a fold) the others are seeded from a scene where they pop out
     /// (n = 8: θ0 = 89.5°, A/B = 50; n = 7: 89°, 20, found by the
