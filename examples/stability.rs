@@ -69,7 +69,8 @@ fn run() -> Result<(), Box<dyn Error>> {
         "{:>5} {:>9} {:>9} | force: carried direct λ_min | extension: carried direct λ_min | contact",
         "point", "Δz", "F/(2πn)²"
     );
-    let (mut t_stab, mut t_contact) = (Duration::ZERO, Duration::ZERO);
+    let (mut t_stab, mut t_index, mut t_contact) = (Duration::ZERO, Duration::ZERO, Duration::ZERO);
+    let mut index_differs = 0;
     let mut disagree = 0;
     let mut failed = 0;
     for (i, sol) in &kept {
@@ -87,6 +88,15 @@ fn run() -> Result<(), Box<dyn Error>> {
             }
         });
         t_stab += t.elapsed();
+        // the index alone, in O(N) (`Equilibrium::stability`)
+        let t = Instant::now();
+        let index = [Control::Force, Control::Extension].map(|c| eq.stability(c));
+        t_index += t.elapsed();
+        for (i, d) in index.iter().zip(&direct) {
+            if let (Ok(a), Ok(b)) = (i, d) {
+                index_differs += usize::from(*a != b.stability());
+            }
+        }
         let t = Instant::now();
         let contact = eq.closest_approach();
         t_contact += t.elapsed();
@@ -126,9 +136,12 @@ fn run() -> Result<(), Box<dyn Error>> {
     let k = kept.len().max(1) as u32;
     println!(
         "{} sampled points, {disagree} disagreements, {failed} direct tests failed; pull {pull_time:.2?}; direct test \
-         ({segments} segments) {:.2?} per point and control; contact {:.2?} per point",
+         ({segments} segments) {:.2?} per point and control; its index alone (`Equilibrium::stability`, \
+         {} segments, O(N)) {:.2?}, {index_differs} different from the eigenvalues'; contact {:.2?} per point",
         kept.len(),
         t_stab / (2 * k),
+        hockle::rod::STABILITY_SEGMENTS,
+        t_index / (2 * k),
         t_contact / k
     );
     Ok(())

@@ -74,6 +74,12 @@
 //! difference (the carried forces checked against their mesh as
 //! `--forces` does).
 //!
+//! `--random K [--seed S] [--pull F]` pulls K random scenes about the
+//! reference (θ0 84–89.95°, A/B 0.5–100, ν −0.3–0.45; xorshift from S,
+//! default 4242) to F/((2πn)²B) = F (default 3) and prints the diagram's
+//! count beside each pull's (`random_check.rs`); an error if a pull away
+//! from the lines sees more.
+//!
 //! `--fold-cusps` (with `--scene`, any n, no diagram read) pulls each scene
 //! on the lines' 24 intervals and follows each pop-out's two folds in θ0
 //! both ways to their first cusp (`fold_cusps.rs`): the cusps a reading
@@ -101,7 +107,7 @@ use hockle::rod::{Fixed, Followed, NikolaiRod, PhaseDiagram, Rod};
 /// The committed diagram of n = 4.
 const N4: &str = include_str!("../../docs/data/phase_diagram_n4.csv");
 fn usage() -> String {
-    "usage: phase_diagram [--coils N] [--out DIR] [--compute | --extend CSV | --check] [--scene THETA0_DEG,A_OVER_B,NU]… [--pull F] [--forces] [--force-map] [--cross-check] [--fold-cusps]".into()
+    "usage: phase_diagram [--coils N] [--out DIR] [--compute | --extend CSV | --check] [--scene THETA0_DEG,A_OVER_B,NU]… [--pull F] [--forces] [--force-map] [--cross-check] [--fold-cusps] [--random K [--seed S]]".into()
 }
 
 #[path = "../support/exit.rs"]
@@ -124,6 +130,8 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
     let mut map = false;
     let mut cross = false;
     let mut cusps = false;
+    let mut random: Option<usize> = None;
+    let mut seed: u64 = 4242;
     let mut extend: Option<PathBuf> = None;
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
@@ -150,6 +158,21 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
             "--force-map" => map = true,
             "--cross-check" => cross = true,
             "--fold-cusps" => cusps = true,
+            "--random" => {
+                let v = args.next().ok_or("--random needs a number of scenes")?;
+                random = Some(
+                    v.parse()
+                        .ok()
+                        .filter(|k| *k > 0)
+                        .ok_or(format!("--random {v}: a positive number of scenes"))?,
+                );
+            }
+            "--seed" => {
+                let v = args.next().ok_or("--seed needs a number")?;
+                seed = v
+                    .parse()
+                    .map_err(|_| format!("--seed {v}: a whole number"))?;
+            }
             "--coils" => {
                 let v = args.next().ok_or("--coils needs a number")?;
                 coils = v
@@ -244,6 +267,9 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
     };
     if cross {
         return cross_check::run(coils, &diagram);
+    }
+    if let Some(count) = random {
+        return random_check::run(coils, &diagram, count, seed, pull_to.unwrap_or(3.0));
     }
     if scenes.is_empty() {
         // The reading (lines at fixed ν, interpolated in ν) against the
@@ -362,6 +388,10 @@ mod compute;
 mod convergence;
 mod cross_check;
 mod fold_cusps;
+mod random_check;
+
+#[path = "../../tests/common/mod.rs"]
+mod common;
 mod pulls;
 
 mod force_map;

@@ -186,6 +186,40 @@ fn the_carried_index_agrees_with_the_direct_test_away_from_folds() {
     assert!(unstable_seen.iter().all(|&n| n >= 3), "{unstable_seen:?}");
 }
 
+/// The index counted in O(N) (`Equilibrium::stability`: a block LDLᵀ
+/// of the bordered Hessian along the rod, Sylvester's law) against the
+/// dense eigenvalues of the projected Hessian (`second_variation`, the
+/// same discrete rod and segments) at every sample of the paper's curve,
+/// folds included: two methods on one matrix, so no tolerance; where the
+/// discrete rod has no equilibrium both say so.
+#[test]
+fn the_banded_index_is_the_dense_eigenvalue_count() {
+    let p = paper();
+    let mut compared = [0usize; 2];
+    let mut unstable = [0usize; 2];
+    for (i, sol) in &p.samples {
+        let eq = Equilibrium::new(p.rod, sol.clone()).unwrap();
+        for (c, control) in [Control::Force, Control::Extension].into_iter().enumerate() {
+            let banded = eq.stability(control);
+            let dense = eq
+                .second_variation(control, hockle::rod::STABILITY_SEGMENTS)
+                .map(|v| v.stability());
+            match (banded, dense) {
+                (Ok(b), Ok(d)) => {
+                    assert_eq!(b, d, "point {i} under {control}: {eq}");
+                    compared[c] += 1;
+                    unstable[c] += usize::from(!b.is_stable());
+                }
+                (Err(_), Err(_)) => {}
+                (b, d) => panic!("point {i} under {control}: banded {b:?}, dense {d:?}"),
+            }
+        }
+    }
+    eprintln!("compared {compared:?}, of them unstable {unstable:?}");
+    assert!(compared.iter().all(|&n| n > 50), "{compared:?}");
+    assert!(unstable.iter().all(|&n| n >= 3), "{unstable:?}");
+}
+
 #[test]
 fn at_ninety_degrees_the_planar_branch_loses_stability_at_its_diamond() {
     // The paper's rod at θ0 = 90° on the primary υ branch from k = 0.96

@@ -1,0 +1,81 @@
+//! `--random K`: the diagram against direct pulls at K fresh random scenes
+//! (docs/ACCURACY.md, "At random scenes").
+
+use std::error::Error;
+
+use hockle::rod::PhaseDiagram;
+
+use super::pulls::pulled;
+
+/// The ranges of the random scenes: θ0 in degrees, log10 A/B, ν; about
+/// the reference, where the regions are.
+const THETA0_DEG: (f64, f64) = (84.0, 89.95);
+/// See [`THETA0_DEG`].
+const LOG10_A_OVER_B: (f64, f64) = (-0.3, 2.0);
+/// See [`THETA0_DEG`].
+const NU: (f64, f64) = (-0.3, 0.45);
+
+/// How far either side in θ0 a count read differently marks a scene as
+/// near a line (the reading's own error, docs/ACCURACY.md).
+const NEAR_DEG: f64 = 0.1;
+
+/// Pulls `count` random scenes (xorshift from `seed`) to F/((2πn)²B) =
+/// `force` and prints one line each, `random theta0=<deg> a_over_b=<x>
+/// nu=<x> diagram=<count|unknown> pulled=<count> reached=<bool>
+/// near_line=<bool> max_forces=<F;…>`, and a summary on standard error:
+/// how many as the diagram counts, fewer (pop-outs above the force, or not
+/// on the pull's path), near a line, and more (a contradiction, also
+/// returned as an error).
+pub fn run(
+    coils: u32,
+    diagram: &PhaseDiagram,
+    count: usize,
+    seed: u64,
+    force: f64,
+) -> Result<(), Box<dyn Error + Send + Sync>> {
+    let mut rnd = crate::common::uniform(seed);
+    let mut draw = |(lo, hi): (f64, f64)| lo + (hi - lo) * rnd();
+    let (mut equal, mut fewer, mut near, mut unknown) = (0, 0, 0, 0);
+    let mut more = Vec::new();
+    for _ in 0..count {
+        let t = draw(THETA0_DEG);
+        let a = 10_f64.powf(draw(LOG10_A_OVER_B));
+        let nu = draw(NU);
+        let read = |deg: f64| diagram.pop_outs(deg.to_radians(), a, nu).ok();
+        let counted = read(t);
+        let near_line =
+            counted != read(t - NEAR_DEG) || counted != read((t + NEAR_DEG).min(89.999));
+        let response = pulled(coils, (t, a, nu), force)?;
+        let scale = response.curve().scale();
+        let peaks: Vec<String> = response
+            .pop_outs()
+            .iter()
+            .map(|p| format!("{:.4}", p.max.point.force_scaled(scale)))
+            .collect();
+        let shown = counted.map_or("unknown".to_string(), |c| c.to_string());
+        println!(
+            "random theta0={t:.3} a_over_b={a:.3} nu={nu:.3} diagram={shown} pulled={} reached={} near_line={near_line} max_forces={}",
+            peaks.len(),
+            response.reached_target(),
+            peaks.join(";")
+        );
+        match counted {
+            None => unknown += 1,
+            Some(_) if near_line => near += 1,
+            Some(c) if peaks.len() == c => equal += 1,
+            Some(c) if peaks.len() < c => fewer += 1,
+            Some(_) => more.push((t, a, nu)),
+        }
+    }
+    eprintln!(
+        "n = {coils}, {count} random scenes (seed {seed}) pulled to F/((2πn)²B) = {force}: {equal} \
+         as the diagram counts, {fewer} with fewer, {near} within {NEAR_DEG}° of a line, {unknown} \
+         not resolved by the diagram, {} with more",
+        more.len()
+    );
+    if more.is_empty() {
+        Ok(())
+    } else {
+        Err(format!("pulls see more pop-outs than the diagram counts at {more:?}").into())
+    }
+}
