@@ -2,7 +2,7 @@
 //! (forward automatic differentiation), the constraint rows, and the
 //! Newton polish onto the discrete equilibrium.
 
-use nalgebra::{DMatrix, DVector, Vector3};
+use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
 
 use crate::error::{Error, Result};
 use crate::rod::jet::{Jet, QuatJet, quat_const, quat_mul, rotation};
@@ -18,10 +18,65 @@ pub(super) struct Discrete {
 /// Hessian and gradient of L = U − F·r(1), the constraint gradients (rows
 /// ∇x(1), ∇y(1), ξ, ∇z(1)) and r(1).
 pub(super) struct Assembled {
-    pub(super) hess: DMatrix<f64>,
+    pub(super) hess: BlockTridiagonal,
     pub(super) grad: DVector<f64>,
     pub(super) rows: DMatrix<f64>,
     pub(super) end: Vector3<f64>,
+}
+
+/// A symmetric block-tridiagonal matrix in 3 × 3 blocks, one block row
+/// per segment: the discrete rod's Hessian (each node's energy couples two
+/// neighbouring segments; the load's, one), in O(N) memory.
+pub(super) struct BlockTridiagonal {
+    /// H_ii.
+    pub(super) diag: Vec<Matrix3<f64>>,
+    /// H_{i,i+1} (H_{i+1,i} is its transpose).
+    pub(super) upper: Vec<Matrix3<f64>>,
+}
+
+impl BlockTridiagonal {
+    fn zeros(segments: usize) -> Self {
+        Self {
+            diag: vec![Matrix3::zeros(); segments],
+            upper: vec![Matrix3::zeros(); segments.saturating_sub(1)],
+        }
+    }
+
+    /// The order, 3 per segment.
+    pub(super) fn size(&self) -> usize {
+        3 * self.diag.len()
+    }
+
+    /// The entry (i, j).
+    pub(super) fn get(&self, i: usize, j: usize) -> f64 {
+        let (bi, bj) = (i / 3, j / 3);
+        if bi == bj {
+            self.diag[bi][(i % 3, j % 3)]
+        } else if bj == bi + 1 {
+            self.upper[bi][(i % 3, j % 3)]
+        } else if bi == bj + 1 {
+            self.upper[bj][(j % 3, i % 3)]
+        } else {
+            0.0
+        }
+    }
+
+    /// Adds `v` at (i, j) for j in the same or the next block row (the
+    /// upper triangle of the blocks; the lower is its transpose).
+    fn add_upper(&mut self, i: usize, j: usize, v: f64) {
+        let (bi, bj) = (i / 3, j / 3);
+        if bi == bj {
+            self.diag[bi][(i % 3, j % 3)] += v;
+        } else if bj == bi + 1 {
+            self.upper[bi][(i % 3, j % 3)] += v;
+        }
+    }
+
+    /// The dense matrix (for the eigenvalues of `second_variation`).
+    pub(super) fn to_dense(&self) -> DMatrix<f64> {
+        let n = self.size();
+        DMatrix::from_fn(n, n, |i, j| self.get(i, j))
+    }
 }
 
 impl Assembled {
@@ -36,36 +91,22 @@ impl Assembled {
 
     /// The Newton step of the polish, (δφ, δF_x, δF_y), from
     /// [[H, −Gᵀ], [−G, 0]] [δφ; λ] = [−∇L; x(1); y(1); 0] (G the rows of
-    /// x(1), y(1) and the phase): by the O(N) sweep with the local phase
-    /// and δφ then made orthogonal to ξ (the two phases differ by a
-    /// multiple of ξ, a null vector of the rest), or by the sparse LU of
-    /// the whole bordered matrix where the sweep meets a nearly singular
-    /// pivot. `None` where neither solves it.
-    fn newton_step(&self, pattern: &crate::linalg::SparsePattern) -> Option<(Vec<f64>, [f64; 2])> {
-        let n = self.hess.nrows();
-        if let Some(sweep) = super::sweep::Sweep::new(&self.hess, self.phase0()) {
-            let w = self.rows.rows(0, 2);
-            let mut r = DMatrix::<f64>::zeros(n, 3);
-            r.column_mut(0).copy_from(&(-&self.grad));
-            r.view_mut((0, 1), (n, 2)).copy_from(&w.transpose());
-            let x = sweep.solve(&r);
-            let (y, xw) = (x.column(0), x.columns(1, 2));
-            // −W (Y + X μ) = (x(1), y(1))
-            let wx = w * xw;
-            let b = -(nalgebra::Vector2::new(self.end.x, self.end.y) + w * y);
-            let mu = nalgebra::Matrix2::new(wx[(0, 0)], wx[(0, 1)], wx[(1, 0)], wx[(1, 1)])
-                .try_inverse()?
-                * b;
-            let mut dphi = y + xw * mu;
-            let xi = self.rows.row(Self::PHASE_ROW).transpose();
-            let along = dphi.dot(&xi) / xi.norm_squared();
-            dphi -= xi * along;
-            if dphi.iter().all(|v| v.is_finite()) && mu.iter().all(|v| v.is_finite()) {
-                return Some((dphi.iter().copied().collect(), [mu.x, mu.y]));
-            }
+    /// x(1), y(1) and the phase) by a sparse LU (its pattern analysed on
+    /// first use, in `pattern`): O(N) fill, as the border is three rows.
+    /// (The index's sweep with its local phase solves another system, whose
+    /// phase multiplier twists segment 0 where this one turns the whole
+    /// rod: off the equilibrium it steered Newton away, measured at 100
+    /// segments on the paper's curve.) `None` where it does not solve.
+    fn newton_step(
+        &self,
+        pattern: &mut Option<crate::linalg::SparsePattern>,
+    ) -> Option<(Vec<f64>, [f64; 2])> {
+        let n = self.hess.size();
+        if pattern.is_none() {
+            *pattern = bordered_pattern(n);
         }
         let (values, rhs) = bordered_values(self);
-        let step = pattern.factor(&values)?.solve(&rhs)?;
+        let step = pattern.as_ref()?.factor(&values)?.solve(&rhs)?;
         Some((step[..n].to_vec(), [step[n], step[n + 1]]))
     }
 }
@@ -78,7 +119,7 @@ const POLISH_ITERATIONS: u32 = 10;
 const POLISH_MAX_STEP: f64 = 0.5;
 /// Rotation increments (radians) at which the polish has converged; the
 /// rounding floor of the solve is ~1e-11 at 200 segments (measured with
-/// the dense LU this sweep replaced).
+/// the dense LU the sparse one replaced).
 const POLISH_TOLERANCE: f64 = 1e-9;
 
 impl Discrete {
@@ -86,7 +127,7 @@ impl Discrete {
         let nn = self.frames.len();
         let h = self.h;
         let n = 3 * nn;
-        let mut hess = DMatrix::<f64>::zeros(n, n);
+        let mut hess = BlockTridiagonal::zeros(nn);
         let mut grad = DVector::<f64>::zeros(n);
         // Bending and twisting between segments k − 1 and k.
         for k in 1..nn {
@@ -103,7 +144,7 @@ impl Discrete {
             for a in 0..6 {
                 grad[base + a] += e.g[a];
                 for b in 0..6 {
-                    hess[(base + a, base + b)] += e.h[a][b];
+                    hess.add_upper(base + a, base + b, e.h[a][b]);
                 }
             }
         }
@@ -119,7 +160,7 @@ impl Discrete {
                 for a in 0..3 {
                     grad[base + a] += w * dc.g[a];
                     for b in 0..3 {
-                        hess[(base + a, base + b)] += w * dc.h[a][b];
+                        hess.add_upper(base + a, base + b, w * dc.h[a][b]);
                     }
                 }
                 let row = [0, 1, 3][c];
@@ -151,14 +192,10 @@ impl Discrete {
         segments: usize,
     ) -> Result<()> {
         let mut sys = first;
-        let n = sys.hess.nrows();
         let mut last = f64::INFINITY;
-        let pattern = bordered_pattern(n).ok_or(Error::SingularJacobian {
-            block: "discrete rod's equilibrium (its sparsity pattern)",
-            index: 0,
-        })?;
+        let mut pattern = None;
         for iteration in 0..POLISH_ITERATIONS {
-            let Some((dphi, dforce)) = sys.newton_step(&pattern) else {
+            let Some((dphi, dforce)) = sys.newton_step(&mut pattern) else {
                 return Err(Error::SingularJacobian {
                     block: "discrete rod's equilibrium (at a fold of the force)",
                     index: u64::from(iteration),
@@ -326,11 +363,11 @@ fn bordered_pattern(n: usize) -> Option<crate::linalg::SparsePattern> {
 /// The values of [`bordered_entries`] at `sys`, and the right-hand side
 /// [−∇L; x(1); y(1); 0] of the polish's Newton step.
 fn bordered_values(sys: &Assembled) -> (Vec<f64>, Vec<f64>) {
-    let n = sys.hess.nrows();
+    let n = sys.hess.size();
     let values = bordered_entries(n)
         .into_iter()
         .map(|(i, j)| match (i < n, j < n) {
-            (true, true) => sys.hess[(i, j)],
+            (true, true) => sys.hess.get(i, j),
             (true, false) => -sys.rows[(j - n, i)],
             _ => -sys.rows[(i - n, j)],
         })

@@ -55,8 +55,8 @@
 //! n₋ of the bordered matrix [[H, Gᵀ], [G, 0]] less c, counted by a block
 //! LDLᵀ along the rod with the phase taken on the first segment alone
 //! (`sweep.rs`; the dense eigenvalues where a pivot is nearly singular).
-//! The same sweep solves the polish's Newton steps below (before, a dense
-//! LU of size 3N + 3).
+//! The polish's Newton steps below take a sparse LU of the bordered
+//! matrix (O(N) fill; before, a dense LU of size 3N + 3).
 //!
 //! The sampled frames are an equilibrium of the rod to the collocation's
 //! accuracy, but of the discrete energy only to O(h²); an eigenvalue
@@ -169,8 +169,8 @@ impl Equilibrium {
     ///
     /// Independent of any continuation history; it checks the index that a
     /// [`crate::spring::Response`] carries along its curve
-    /// ([`crate::stability`]). Cost: a few milliseconds (docs/PERFORMANCE.md);
-    /// paid only when called.
+    /// ([`crate::stability`]). Cost: about 9 ms (docs/PERFORMANCE.md), paid
+    /// only when called.
     ///
     /// # Errors
     /// As [`Self::second_variation`].
@@ -220,7 +220,7 @@ impl Equilibrium {
         let (sys, residual) = self.polished(segments)?;
         let c = end_rows(control).len() + 1;
         let u = orthonormal_rows(sys.rows.rows(0, c).into_owned());
-        let hess = sys.hess;
+        let hess = sys.hess.to_dense();
         let n = hess.nrows();
         // P H P + σ UᵀU, P = I − UᵀU.
         let uh = &u * &hess;

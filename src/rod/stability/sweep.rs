@@ -1,7 +1,7 @@
-//! The bordered Hessian of the discrete rod in O(N): a block LDLᵀ sweep
-//! along the rod that solves with it ([`Sweep::solve`], the polish's
-//! Newton steps) and counts its negative eigenvalues ([`constrained_index`],
-//! Sylvester's law).
+//! The index of the discrete rod's second variation in O(N): a block LDLᵀ
+//! sweep along the rod that counts the negative eigenvalues of its
+//! bordered Hessian ([`constrained_index`], Sylvester's law) and solves
+//! with it for the end rows' Schur complement ([`Sweep::solve`]).
 //!
 //! For G of full row rank c, the bordered matrix
 //!
@@ -32,9 +32,11 @@
 //! The sweep does not pivot between blocks (as the Sturm counts of
 //! structural codes do not): where a pivot block or T is nearly singular
 //! relative to its own size it gives up (`None`), and the caller takes the
-//! sparse LU or the dense eigenvalues instead.
+//! dense eigenvalues instead.
 
-use nalgebra::{DMatrix, DVector, SymmetricEigen};
+use nalgebra::{DMatrix, DVector, Matrix4, SymmetricEigen, Vector4};
+
+use super::discrete::BlockTridiagonal;
 
 /// A pivot block (or T) counts as nearly singular when its smallest
 /// eigenvalue in modulus is below this fraction of its largest: a count
@@ -42,12 +44,18 @@ use nalgebra::{DMatrix, DVector, SymmetricEigen};
 /// through it loses the digits its condition number costs.
 const NEARLY_SINGULAR: f64 = 1e-10;
 
-/// The block LDLᵀ of M = [[H, ℓ], [ℓᵀ, 0]] (module docs).
+/// The block LDLᵀ of M = [[H, ℓ], [ℓᵀ, 0]] (module docs). Every block is
+/// 4 × 4 on the stack: segment 0's holds λ_ℓ in its fourth row and
+/// column, the others a padding pivot there (a positive multiple of the
+/// identity, uncoupled, the size of the block's own diagonal), which adds
+/// a positive eigenvalue and no negative one.
 pub(super) struct Sweep {
-    /// S_i⁻¹ (4 × 4 at i = 0, else 3 × 3).
-    inverses: Vec<DMatrix<f64>>,
-    /// C_i (4 × 3 at i = 0, else 3 × 3; none after the last segment).
-    couplings: Vec<DMatrix<f64>>,
+    /// S_i⁻¹.
+    inverses: Vec<Matrix4<f64>>,
+    /// C_i, the coupling of segment i to i + 1 (fourth row and column
+    /// zero, so λ_ℓ and the paddings take no part; none after the last
+    /// segment).
+    couplings: Vec<Matrix4<f64>>,
     /// n₋(M).
     negative: usize,
 }
@@ -56,42 +64,43 @@ impl Sweep {
     /// The sweep of `hess` (n × n, block tridiagonal in 3 × 3 blocks) with
     /// the local phase `phase` on segment 0; `None` where a pivot is nearly
     /// singular ([`NEARLY_SINGULAR`]).
-    pub(super) fn new(hess: &DMatrix<f64>, phase: [f64; 3]) -> Option<Self> {
-        let segments = hess.nrows() / 3;
-        let block = |i: usize, j: usize, rows: usize| {
-            let mut b = DMatrix::<f64>::zeros(rows, 3);
-            for a in 0..3 {
-                for c in 0..3 {
-                    b[(a, c)] = hess[(3 * i + a, 3 * j + c)];
-                }
-            }
+    pub(super) fn new(hess: &BlockTridiagonal, phase: [f64; 3]) -> Option<Self> {
+        let segments = hess.diag.len();
+        let padded = |m: &nalgebra::Matrix3<f64>| {
+            let mut b = Matrix4::<f64>::zeros();
+            b.fixed_view_mut::<3, 3>(0, 0).copy_from(m);
             b
         };
-        let mut inverses: Vec<DMatrix<f64>> = Vec::with_capacity(segments);
-        let mut couplings: Vec<DMatrix<f64>> = Vec::with_capacity(segments);
+        let mut inverses = Vec::with_capacity(segments);
+        let mut couplings = Vec::with_capacity(segments);
         let mut negative = 0;
         for i in 0..segments {
-            let size = if i == 0 { 4 } else { 3 };
-            let mut s = DMatrix::<f64>::zeros(size, size);
-            s.view_mut((0, 0), (3, 3)).copy_from(&block(i, i, 3));
+            let mut s = padded(&hess.diag[i]);
             if i == 0 {
                 for a in 0..3 {
                     s[(a, 3)] = phase[a];
                     s[(3, a)] = phase[a];
                 }
             } else {
-                let (inv, c) = (&inverses[i - 1], &couplings[i - 1]);
-                s -= c.transpose() * (inv * c);
+                let c: &Matrix4<f64> = &couplings[i - 1];
+                s -= c.transpose() * (inverses[i - 1] * c);
+                s[(3, 3)] = (0..3).map(|a| s[(a, a)].abs()).fold(0.0, f64::max);
             }
-            let s = (&s + s.transpose()) * 0.5;
+            let s = (s + s.transpose()) * 0.5;
             let eig = SymmetricEigen::new(s);
-            if nearly_singular(&eig.eigenvalues) {
+            let values = DVector::from_iterator(4, eig.eigenvalues.iter().copied());
+            if nearly_singular(&values) {
                 return None;
             }
             negative += eig.eigenvalues.iter().filter(|l| **l < 0.0).count();
-            inverses.push(inverse(&eig));
+            let v = eig.eigenvectors;
+            let mut scaled = v;
+            for (j, l) in eig.eigenvalues.iter().enumerate() {
+                scaled.column_mut(j).scale_mut(1.0 / l);
+            }
+            inverses.push(scaled * v.transpose());
             if i + 1 < segments {
-                couplings.push(block(i, i + 1, size));
+                couplings.push(padded(&hess.upper[i]));
             }
         }
         Some(Self {
@@ -105,30 +114,35 @@ impl Sweep {
     /// order (no row for λ_ℓ, whose right-hand side is 0).
     pub(super) fn solve(&self, r: &DMatrix<f64>) -> DMatrix<f64> {
         let segments = self.inverses.len();
-        let k = r.ncols();
-        let rows = |i: usize| if i == 0 { 4 } else { 3 };
-        // forward: Z_i = R_i − C_{i−1}ᵀ S_{i−1}⁻¹ Z_{i−1}
-        let mut z: Vec<DMatrix<f64>> = Vec::with_capacity(segments);
-        for i in 0..segments {
-            let mut zi = DMatrix::<f64>::zeros(rows(i), k);
-            zi.view_mut((0, 0), (3, k)).copy_from(&r.rows(3 * i, 3));
-            if i > 0 {
-                let c = &self.couplings[i - 1];
-                zi -= c.transpose() * (&self.inverses[i - 1] * &z[i - 1]);
+        let mut x = DMatrix::<f64>::zeros(3 * segments, r.ncols());
+        let mut z = vec![Vector4::<f64>::zeros(); segments];
+        for col in 0..r.ncols() {
+            // forward: Z_i = R_i − C_{i−1}ᵀ S_{i−1}⁻¹ Z_{i−1}
+            for i in 0..segments {
+                let mut zi = Vector4::new(
+                    r[(3 * i, col)],
+                    r[(3 * i + 1, col)],
+                    r[(3 * i + 2, col)],
+                    0.0,
+                );
+                if i > 0 {
+                    zi -= self.couplings[i - 1].transpose() * (self.inverses[i - 1] * z[i - 1]);
+                }
+                z[i] = zi;
             }
-            z.push(zi);
-        }
-        // back: X_i = S_i⁻¹ (Z_i − C_i X_{i+1})
-        let mut x = DMatrix::<f64>::zeros(3 * segments, k);
-        let mut next: Option<DMatrix<f64>> = None;
-        for i in (0..segments).rev() {
-            let mut rhs = z[i].clone();
-            if let Some(xn) = &next {
-                rhs -= &self.couplings[i] * xn;
+            // back: X_i = S_i⁻¹ (Z_i − C_i X_{i+1})
+            let mut next = Vector4::<f64>::zeros();
+            for i in (0..segments).rev() {
+                let mut rhs = z[i];
+                if i + 1 < segments {
+                    rhs -= self.couplings[i] * next;
+                }
+                let xi = self.inverses[i] * rhs;
+                for a in 0..3 {
+                    x[(3 * i + a, col)] = xi[a];
+                }
+                next = xi;
             }
-            let xi = &self.inverses[i] * rhs;
-            x.view_mut((3 * i, 0), (3, k)).copy_from(&xi.rows(0, 3));
-            next = Some(xi.rows(0, 3).into_owned());
         }
         x
     }
@@ -140,7 +154,7 @@ impl Sweep {
 /// of `hess` there), `None` where a pivot or the end rows' Schur
 /// complement is nearly singular ([`NEARLY_SINGULAR`]).
 pub(super) fn constrained_index(
-    hess: &DMatrix<f64>,
+    hess: &BlockTridiagonal,
     end: &DMatrix<f64>,
     phase: [f64; 3],
 ) -> Option<usize> {
@@ -158,16 +172,6 @@ pub(super) fn constrained_index(
     }
     // n₋(B) = index + c, c = c′ + 1 (the phase)
     negative.checked_sub(c_end + 1)
-}
-
-/// S⁻¹ = V Λ⁻¹ Vᵀ from the eigen-decomposition.
-fn inverse(eig: &SymmetricEigen<f64, nalgebra::Dyn>) -> DMatrix<f64> {
-    let v = &eig.eigenvectors;
-    let mut scaled = v.clone();
-    for (j, l) in eig.eigenvalues.iter().enumerate() {
-        scaled.column_mut(j).scale_mut(1.0 / l);
-    }
-    scaled * v.transpose()
 }
 
 /// Whether the smallest eigenvalue in modulus is below [`NEARLY_SINGULAR`]
