@@ -55,8 +55,8 @@
 //! n₋ of the bordered matrix [[H, Gᵀ], [G, 0]] less c, counted by a block
 //! LDLᵀ along the rod with the phase taken on the first segment alone
 //! (`sweep.rs`; the dense eigenvalues where a pivot is nearly singular).
-//! The polish's Newton steps below take a sparse LU of the bordered
-//! matrix (O(N) fill; before, a dense LU of size 3N + 3).
+//! The polish's Newton steps below take the same sweep with a rank-2
+//! update to the global phase (before, a dense LU of size 3N + 3).
 //!
 //! The sampled frames are an equilibrium of the rod to the collocation's
 //! accuracy, but of the discrete energy only to O(h²); an eigenvalue
@@ -169,7 +169,7 @@ impl Equilibrium {
     ///
     /// Independent of any continuation history; it checks the index that a
     /// [`crate::spring::Response`] carries along its curve
-    /// ([`crate::stability`]). Cost: about 9 ms (docs/PERFORMANCE.md), paid
+    /// ([`crate::stability`]). Cost: about 3 ms (docs/PERFORMANCE.md), paid
     /// only when called.
     ///
     /// # Errors

@@ -1,7 +1,7 @@
-//! The index of the discrete rod's second variation in O(N): a block LDLᵀ
-//! sweep along the rod that counts the negative eigenvalues of its
-//! bordered Hessian ([`constrained_index`], Sylvester's law) and solves
-//! with it for the end rows' Schur complement ([`Sweep::solve`]).
+//! The discrete rod's bordered Hessian in O(N): a block LDLᵀ sweep along
+//! the rod that counts its negative eigenvalues ([`constrained_index`],
+//! Sylvester's law) and solves with it ([`Sweep::solve_with_phase`]: the
+//! end rows' Schur complement, and the polish's Newton steps).
 //!
 //! For G of full row rank c, the bordered matrix
 //!
@@ -32,7 +32,7 @@
 //! The sweep does not pivot between blocks (as the Sturm counts of
 //! structural codes do not): where a pivot block or T is nearly singular
 //! relative to its own size it gives up (`None`), and the caller takes the
-//! dense eigenvalues instead.
+//! dense eigenvalues or a sparse LU instead.
 
 use nalgebra::{DMatrix, DVector, Matrix4, SymmetricEigen, Vector4};
 
@@ -113,8 +113,20 @@ impl Sweep {
     /// X = M⁻¹ [R; 0] restricted to the φ rows: `r` is n × k in segment
     /// order (no row for λ_ℓ, whose right-hand side is 0).
     pub(super) fn solve(&self, r: &DMatrix<f64>) -> DMatrix<f64> {
+        self.solve_with_phase(r, &vec![0.0; r.ncols()]).0
+    }
+
+    /// M⁻¹ [R; r_ℓ]: `r` (n × k, segment order) the φ rows of the
+    /// right-hand sides and `r_phase` (k) their λ_ℓ entries; the φ rows of
+    /// the solutions and their λ_ℓ entries.
+    pub(super) fn solve_with_phase(
+        &self,
+        r: &DMatrix<f64>,
+        r_phase: &[f64],
+    ) -> (DMatrix<f64>, Vec<f64>) {
         let segments = self.inverses.len();
         let mut x = DMatrix::<f64>::zeros(3 * segments, r.ncols());
+        let mut x_phase = vec![0.0; r.ncols()];
         let mut z = vec![Vector4::<f64>::zeros(); segments];
         for col in 0..r.ncols() {
             // forward: Z_i = R_i − C_{i−1}ᵀ S_{i−1}⁻¹ Z_{i−1}
@@ -123,7 +135,7 @@ impl Sweep {
                     r[(3 * i, col)],
                     r[(3 * i + 1, col)],
                     r[(3 * i + 2, col)],
-                    0.0,
+                    if i == 0 { r_phase[col] } else { 0.0 },
                 );
                 if i > 0 {
                     zi -= self.couplings[i - 1].transpose() * (self.inverses[i - 1] * z[i - 1]);
@@ -141,10 +153,13 @@ impl Sweep {
                 for a in 0..3 {
                     x[(3 * i + a, col)] = xi[a];
                 }
+                if i == 0 {
+                    x_phase[col] = xi[3];
+                }
                 next = xi;
             }
         }
-        x
+        (x, x_phase)
     }
 }
 
