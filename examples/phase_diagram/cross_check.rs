@@ -21,6 +21,7 @@ use hockle::rod::{CuspSearch, Followed, PhaseDiagram};
 
 use super::checked::checked_force;
 use super::compute::{carry_search, reference_family};
+use super::pulls::{peak_forces, pulled, read_near_line};
 
 /// The example's error type.
 type Fallible<T> = Result<T, Box<dyn Error + Send + Sync>>;
@@ -50,16 +51,9 @@ pub fn run(coils: u32, diagram: &PhaseDiagram) -> Fallible<()> {
     let mut fewer = Vec::new();
     let mut contradicted = Vec::new();
     for (t, a, nu) in scenes {
-        let read = |deg: f64| diagram.pop_outs(deg.to_radians(), a, nu).ok();
-        let count = read(t);
-        let near_line = count != read(t - 0.1) || count != read((t + 0.1).min(89.999));
-        let response = super::pulls::pulled(coils, (t, a, nu), FORCE)?;
-        let scale = response.curve().scale();
-        let peaks: Vec<String> = response
-            .pop_outs()
-            .iter()
-            .map(|p| format!("{:.4}", p.max.point.force_scaled(scale)))
-            .collect();
+        let (count, near_line) = read_near_line(diagram, (t, a, nu));
+        let response = pulled(coils, (t, a, nu), FORCE)?;
+        let peaks = peak_forces(&response);
         let pulled = peaks.len();
         let reached = response.reached_target();
         let shown = count.map_or("unknown".to_string(), |c| c.to_string());

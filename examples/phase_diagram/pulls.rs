@@ -94,6 +94,29 @@ pub(crate) fn pulled(
     Ok(RodModel::default().pull(&spring, to)?)
 }
 
+/// How far either side in θ0 a count read differently marks a scene as
+/// near a line (the reading's own error, docs/ACCURACY.md).
+pub(crate) const NEAR_DEG: f64 = 0.1;
+
+/// The diagram's count at the scene (`None` where it is not mapped), and
+/// whether it is read differently [`NEAR_DEG`] either side in θ0.
+pub(crate) fn read_near_line(diagram: &PhaseDiagram, (t, a, nu): Scene) -> (Option<usize>, bool) {
+    let read = |deg: f64| diagram.pop_outs(deg.to_radians(), a, nu).ok();
+    let count = read(t);
+    let near = count != read(t - NEAR_DEG) || count != read((t + NEAR_DEG).min(89.999));
+    (count, near)
+}
+
+/// The maximum forces F/((2πn)²B) of a pull's pop-outs, as printed.
+pub(crate) fn peak_forces(response: &hockle::spring::Response) -> Vec<String> {
+    let scale = response.curve().scale();
+    response
+        .pop_outs()
+        .iter()
+        .map(|p| format!("{:.4}", p.max.point.force_scaled(scale)))
+        .collect()
+}
+
 /// `--pull`: the scene pulled from rest to F/((2πn)²B) = `to`, its
 /// pop-outs and their maximum forces.
 pub(crate) fn pull_scene(
@@ -102,12 +125,7 @@ pub(crate) fn pull_scene(
     to: f64,
 ) -> Result<(), Box<dyn Error + Send + Sync>> {
     let response = pulled(coils, (t, a, nu), to)?;
-    let scale = response.curve().scale();
-    let forces: Vec<String> = response
-        .pop_outs()
-        .iter()
-        .map(|p| format!("{:.4}", p.max.point.force_scaled(scale)))
-        .collect();
+    let forces = peak_forces(&response);
     println!(
         "pulled pop_outs={} to={to} reached={} max_forces={}",
         forces.len(),

@@ -5,7 +5,7 @@ use std::error::Error;
 
 use hockle::rod::PhaseDiagram;
 
-use super::pulls::pulled;
+use super::pulls::{NEAR_DEG, peak_forces, pulled, read_near_line};
 
 /// The ranges of the random scenes: θ0 in degrees, log10 A/B, ν; about
 /// the reference, where the regions are.
@@ -14,10 +14,6 @@ const THETA0_DEG: (f64, f64) = (84.0, 89.95);
 const LOG10_A_OVER_B: (f64, f64) = (-0.3, 2.0);
 /// See [`THETA0_DEG`].
 const NU: (f64, f64) = (-0.3, 0.45);
-
-/// How far either side in θ0 a count read differently marks a scene as
-/// near a line (the reading's own error, docs/ACCURACY.md).
-const NEAR_DEG: f64 = 0.1;
 
 /// Pulls `count` random scenes (xorshift from `seed`) to F/((2πn)²B) =
 /// `force` and prints one line each, `random theta0=<deg> a_over_b=<x>
@@ -41,17 +37,9 @@ pub fn run(
         let t = draw(THETA0_DEG);
         let a = 10_f64.powf(draw(LOG10_A_OVER_B));
         let nu = draw(NU);
-        let read = |deg: f64| diagram.pop_outs(deg.to_radians(), a, nu).ok();
-        let counted = read(t);
-        let near_line =
-            counted != read(t - NEAR_DEG) || counted != read((t + NEAR_DEG).min(89.999));
+        let (counted, near_line) = read_near_line(diagram, (t, a, nu));
         let response = pulled(coils, (t, a, nu), force)?;
-        let scale = response.curve().scale();
-        let peaks: Vec<String> = response
-            .pop_outs()
-            .iter()
-            .map(|p| format!("{:.4}", p.max.point.force_scaled(scale)))
-            .collect();
+        let peaks = peak_forces(&response);
         let shown = counted.map_or("unknown".to_string(), |c| c.to_string());
         println!(
             "random theta0={t:.3} a_over_b={a:.3} nu={nu:.3} diagram={shown} pulled={} reached={} near_line={near_line} max_forces={}",

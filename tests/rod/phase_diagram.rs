@@ -454,21 +454,17 @@ fn direct_pulls_see_the_n7_pop_outs_the_diagram_predicts() {
     let d =
         PhaseDiagram::from_csv(7, include_str!("../../docs/data/phase_diagram_n7.csv")).unwrap();
     assert!(d.is_complete());
-    for (t, a, nu) in [
-        (89.6, 20.0, 0.05),
-        (89.5, 10.0, 0.05),
-        (89.0, 10.0, 0.05),
-        (88.0, 10.0, 0.05),
-        (88.0, 5.0, 0.05),
-        (89.5, 10.0, 0.2),
-    ] {
-        let predicted = predicted_away_from_lines(&d, t, a, nu);
-        assert_eq!(
-            pulled_pop_outs_on(7, t, a, nu, 48, 3.0),
-            predicted,
-            "scene θ0 = {t}°, A/B = {a}, ν = {nu}"
-        );
-    }
+    pulls_on_48_see_what_it_predicts(
+        &d,
+        &[
+            (89.6, 20.0, 0.05),
+            (89.5, 10.0, 0.05),
+            (89.0, 10.0, 0.05),
+            (88.0, 10.0, 0.05),
+            (88.0, 5.0, 0.05),
+            (89.5, 10.0, 0.2),
+        ],
+    );
 }
 
 /// n = 5 (`docs/data/phase_diagram_n5.csv`, examples/phase_diagram
@@ -485,19 +481,30 @@ fn direct_pulls_see_the_n5_pop_outs_the_diagram_predicts() {
     let d =
         PhaseDiagram::from_csv(5, include_str!("../../docs/data/phase_diagram_n5.csv")).unwrap();
     assert!(d.is_complete());
-    for (t, a, nu) in [
-        (89.0, 10.0, 0.05),
-        (88.25, 10.0, 0.05),
-        (87.5, 10.0, 0.05),
-        (86.5, 10.0, 0.05),
-        (89.8, 12.0, 0.05),
-        (89.5, 10.0, 0.2),
-    ] {
-        let predicted = predicted_away_from_lines(&d, t, a, nu);
+    pulls_on_48_see_what_it_predicts(
+        &d,
+        &[
+            (89.0, 10.0, 0.05),
+            (88.25, 10.0, 0.05),
+            (87.5, 10.0, 0.05),
+            (86.5, 10.0, 0.05),
+            (89.8, 12.0, 0.05),
+            (89.5, 10.0, 0.2),
+        ],
+    );
+}
+
+/// Every scene (θ0 in degrees, A/B, ν), at least 0.1° from every line of
+/// `d`, pulled to F/((2πn)²B) = 3 on 48 intervals, has the pop-outs `d`
+/// predicts.
+fn pulls_on_48_see_what_it_predicts(d: &PhaseDiagram, scenes: &[(f64, f64, f64)]) {
+    for &(t, a, nu) in scenes {
+        let predicted = predicted_away_from_lines(d, t, a, nu);
         assert_eq!(
-            pulled_pop_outs_on(5, t, a, nu, 48, 3.0),
+            pulled_pop_outs_on(d.coils(), t, a, nu, 48, 3.0),
             predicted,
-            "scene θ0 = {t}°, A/B = {a}, ν = {nu}"
+            "n = {}, scene θ0 = {t}°, A/B = {a}, ν = {nu}",
+            d.coils()
         );
     }
 }
