@@ -85,6 +85,7 @@ use crate::error::{Error, Result};
 use crate::load::Control;
 use crate::stability::Stability;
 
+mod block_tridiagonal;
 mod discrete;
 mod sweep;
 
@@ -176,11 +177,11 @@ impl Equilibrium {
     /// As [`Self::second_variation`].
     pub fn stability(&self, control: Control) -> Result<Stability> {
         let segments = STABILITY_SEGMENTS;
-        let (sys, _) = self.polished(segments)?;
+        let (sys, residual) = self.polished(segments)?;
         let end = sys.rows.select_rows(end_rows(control));
         match sweep::constrained_index(&sys.hess, &end, sys.phase0()) {
             Some(index) => Ok(Stability::new(u32::try_from(index).unwrap_or(u32::MAX))),
-            None => Ok(self.second_variation(control, segments)?.stability()),
+            None => Ok(dense_test(&sys, control, segments, residual)?.stability()),
         }
     }
 
@@ -216,40 +217,8 @@ impl Equilibrium {
     /// 7e-4 of them in the (Δz, F/((2πn)²B)) plane), where the verdict
     /// would be unsure anyway.
     pub fn second_variation(&self, control: Control, segments: usize) -> Result<SecondVariation> {
-        let h = 1.0 / segments as f64;
         let (sys, residual) = self.polished(segments)?;
-        let c = end_rows(control).len() + 1;
-        let u = orthonormal_rows(sys.rows.rows(0, c).into_owned());
-        let hess = sys.hess.to_dense();
-        let n = hess.nrows();
-        // P H P + σ UᵀU, P = I − UᵀU.
-        let uh = &u * &hess;
-        let uhu = &uh * u.transpose();
-        let mut m = &hess - u.transpose() * &uh - uh.transpose() * &u + u.transpose() * &uhu * &u;
-        let sigma = (0..n).map(|i| hess[(i, i)].abs()).fold(1.0, f64::max);
-        m += u.transpose() * &u * sigma;
-        // symmetrise the rounding of the products
-        let m = (&m + m.transpose()) * 0.5;
-        if m.iter().any(|v| !v.is_finite()) {
-            return Err(Error::NonFinite {
-                what: "second variation of the discrete rod",
-                s: f64::NAN,
-            });
-        }
-        let Some(eig) = crate::linalg::symmetric_eigenvalues(m.as_slice(), n) else {
-            return Err(Error::NonFinite {
-                what: "second variation of the discrete rod (eigenvalues did not converge)",
-                s: f64::NAN,
-            });
-        };
-        let index = eig.iter().filter(|&&l| l < 0.0).count();
-        Ok(SecondVariation {
-            control,
-            segments,
-            index: u32::try_from(index).unwrap_or(u32::MAX),
-            lowest: eig.iter().take(6).map(|l| l / h).collect(),
-            residual,
-        })
+        dense_test(&sys, control, segments, residual)
     }
 
     /// The discrete rod of `segments` segments moved onto its equilibrium
@@ -296,4 +265,48 @@ fn end_rows(control: Control) -> &'static [usize] {
         Control::Force => &[0, 1],
         Control::Extension => &[0, 1, 3],
     }
+}
+
+/// The dense eigenvalues of the second variation of the polished system
+/// `sys` (module docs): P H P + σ UᵀU, P = I − UᵀU, its negative
+/// eigenvalues the index.
+fn dense_test(
+    sys: &discrete::Assembled,
+    control: Control,
+    segments: usize,
+    residual: f64,
+) -> Result<SecondVariation> {
+    let h = 1.0 / segments as f64;
+    let c = end_rows(control).len() + 1;
+    let u = orthonormal_rows(sys.rows.rows(0, c).into_owned());
+    let hess = sys.hess.to_dense();
+    let n = hess.nrows();
+    // P H P + σ UᵀU, P = I − UᵀU.
+    let uh = &u * &hess;
+    let uhu = &uh * u.transpose();
+    let mut m = &hess - u.transpose() * &uh - uh.transpose() * &u + u.transpose() * &uhu * &u;
+    let sigma = (0..n).map(|i| hess[(i, i)].abs()).fold(1.0, f64::max);
+    m += u.transpose() * &u * sigma;
+    // symmetrise the rounding of the products
+    let m = (&m + m.transpose()) * 0.5;
+    if m.iter().any(|v| !v.is_finite()) {
+        return Err(Error::NonFinite {
+            what: "second variation of the discrete rod",
+            s: f64::NAN,
+        });
+    }
+    let Some(eig) = crate::linalg::symmetric_eigenvalues(m.as_slice(), n) else {
+        return Err(Error::NonFinite {
+            what: "second variation of the discrete rod (eigenvalues did not converge)",
+            s: f64::NAN,
+        });
+    };
+    let index = eig.iter().filter(|&&l| l < 0.0).count();
+    Ok(SecondVariation {
+        control,
+        segments,
+        index: u32::try_from(index).unwrap_or(u32::MAX),
+        lowest: eig.iter().take(6).map(|l| l / h).collect(),
+        residual,
+    })
 }

@@ -36,7 +36,7 @@
 
 use nalgebra::{DMatrix, DVector, Matrix4, SymmetricEigen, Vector4};
 
-use super::discrete::BlockTridiagonal;
+use super::block_tridiagonal::BlockTridiagonal;
 
 /// A pivot block (or T) counts as nearly singular when its smallest
 /// eigenvalue in modulus is below this fraction of its largest: a count
