@@ -8,7 +8,7 @@ use hockle::Stiffness;
 use hockle::bvp::Solution;
 use hockle::rod::{CuspSearch, Followed, NikolaiRod, Rod};
 
-/// The mesh of the pull and of the fold curves: the diagram's lines' own.
+// the mesh of the pull and of the fold curves: the diagram's lines' own
 use super::compute::INTERVALS;
 
 /// Where the folds are followed to: down to 45°, up to 1e-4° short of 90°.

@@ -218,6 +218,9 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
         check(nu > -1.0 && nu < 0.5, "ν must be in (−1, 0.5)")?;
     }
     if cusps {
+        if scenes.is_empty() {
+            return Err("--fold-cusps needs at least one --scene THETA0_DEG,A_OVER_B,NU".into());
+        }
         for &scene in &scenes {
             fold_cusps::print(coils, scene)?;
         }

@@ -34,7 +34,7 @@
 //! relative to its own size it gives up (`None`), and the caller takes the
 //! dense eigenvalues or a sparse LU instead.
 
-use nalgebra::{DMatrix, DVector, Matrix4, SymmetricEigen, Vector4};
+use nalgebra::{DMatrix, Matrix4, SymmetricEigen, Vector4};
 
 use super::block_tridiagonal::BlockTridiagonal;
 
@@ -88,8 +88,7 @@ impl Sweep {
             }
             let s = (s + s.transpose()) * 0.5;
             let eig = SymmetricEigen::new(s);
-            let values = DVector::from_iterator(4, eig.eigenvalues.iter().copied());
-            if nearly_singular(&values) {
+            if nearly_singular(eig.eigenvalues.as_slice()) {
                 return None;
             }
             negative += eig.eigenvalues.iter().filter(|l| **l < 0.0).count();
@@ -167,7 +166,8 @@ impl Sweep {
 /// in 3 × 3 blocks) restricted to the kernel of the rows `end` (c′ × n) and
 /// of the phase row (whose segment-0 entries are `phase`; a null vector
 /// of `hess` there), `None` where a pivot or the end rows' Schur
-/// complement is nearly singular ([`NEARLY_SINGULAR`]).
+/// complement is nearly singular ([`NEARLY_SINGULAR`]), or where fewer
+/// negative pivots than constraints came out (no count to trust).
 pub(super) fn constrained_index(
     hess: &BlockTridiagonal,
     end: &DMatrix<f64>,
@@ -180,7 +180,7 @@ pub(super) fn constrained_index(
         let t = -(end * sweep.solve(&end.transpose()));
         let t = (&t + t.transpose()) * 0.5;
         let eig = SymmetricEigen::new(t);
-        if nearly_singular(&eig.eigenvalues) {
+        if nearly_singular(eig.eigenvalues.as_slice()) {
             return None;
         }
         negative += eig.eigenvalues.iter().filter(|l| **l < 0.0).count();
@@ -191,7 +191,7 @@ pub(super) fn constrained_index(
 
 /// Whether the smallest eigenvalue in modulus is below [`NEARLY_SINGULAR`]
 /// of the largest (or any is not finite).
-fn nearly_singular(eigenvalues: &DVector<f64>) -> bool {
+fn nearly_singular(eigenvalues: &[f64]) -> bool {
     let (lo, hi) = eigenvalues
         .iter()
         .fold((f64::INFINITY, 0.0_f64), |(lo, hi), l| {
