@@ -420,8 +420,9 @@ type Seeded = (NikolaiRod, Solution, f64);
 
 /// The pop-outs at `seeds` (θ0 in degrees, A/B; ν = 0.05) that `known`'s
 /// lines do not map: the family at the seed, the pop-out's cusp at the
-/// seed's A/B (its maximum-force fold continued down in θ0, an extended
-/// solution on [`INTERVALS`]) and that A/B. The pop-outs are found by a
+/// seed's A/B (where it vanishes going down in θ0, [`vanishing_cusp`], as
+/// for the reference's pop-outs; an extended solution on [`INTERVALS`]) and
+/// that A/B. The pop-outs are found by a
 /// pull on [`SEED_INTERVALS`] and each cusp is taken from the pull on
 /// [`INTERVALS`] whose cusp is the same ([`SAME_CUSP_DEG`]).
 pub(crate) fn seeded(
@@ -436,11 +437,9 @@ pub(crate) fn seeded(
         let cusps = |n: usize| -> Result<Vec<FoldPoint>, Box<dyn Error + Send + Sync>> {
             let search = CuspSearch::new().intervals(n);
             let mut found = Vec::new();
-            for [max, _] in search.pop_outs(&family, SEED_FORCE)? {
-                if let Ok(Followed::Cusp(c)) =
-                    search.follow(&family, &max, Rod::THETA0, 45_f64.to_radians())
-                {
-                    found.push(*c);
+            for pair in search.pop_outs(&family, SEED_FORCE)? {
+                if let Ok(Some(c)) = vanishing_cusp(&search, &family, &pair) {
+                    found.push(c);
                 }
             }
             Ok(found)

@@ -13,7 +13,11 @@
 //! their fold forces there without a pull, each checked against its mesh
 //! as `--forces` does, `checked.rs`): the scene is accounted for
 //! when as many of them reach it as the diagram counts and as many of
-//! those peak below [`FORCE`] as the pull saw ([`Beyond`]).
+//! those peak below [`FORCE`] as the pull saw ([`Beyond`]). Such a scene
+//! is also stretched under extension control to Δz = [`STRETCH_TO`]
+//! (`pulls::stretched_past`): along the same path from rest, it passes the
+//! pop-outs' maximum forces however high and ends where the rod is nearly
+//! straight.
 
 use std::error::Error;
 
@@ -21,7 +25,7 @@ use hockle::rod::{CuspSearch, Followed, PhaseDiagram};
 
 use super::checked::checked_force;
 use super::compute::{carry_search, reference_family};
-use super::pulls::{peak_forces, pulled, read_near_line};
+use super::pulls::{STRETCH_TO, peak_forces, pulled, read_near_line, stretched_past};
 
 /// The example's error type.
 type Fallible<T> = Result<T, Box<dyn Error + Send + Sync>>;
@@ -70,15 +74,20 @@ pub fn run(coils: u32, diagram: &PhaseDiagram) -> Fallible<()> {
         }
     }
     let beyond = beyond_the_pulls(coils, diagram, &fewer)?;
+    let stretch = stretched_past(coils, &fewer, &mut contradicted)?;
     eprintln!(
         "n = {coils}: {equal} scenes as the diagram counts, {} with fewer pop-outs below \
          F/((2πn)²B) = {FORCE} (of those, carrying the reference's pop-outs there accounts for \
-         {}, for {} as far as they reach, and disagrees with {}), {near} within 0.1° of a \
+         {}, for {} as far as they reach, and disagrees with {}; stretched to Δz = {STRETCH_TO}, \
+         {} see the diagram's count, {} fewer, {} stop short), {near} within 0.1° of a \
          line, {unknown} not resolved by the diagram, {} contradicting it",
         fewer.len(),
         beyond.accounted,
         beyond.partly,
         beyond.disagree,
+        stretch.confirmed,
+        stretch.fewer,
+        stretch.short,
         contradicted.len()
     );
     if contradicted.is_empty() {

@@ -6,7 +6,7 @@
 //! cargo run --release --example phase_diagram [-- --coils N] [--out DIR] [--compute]
 //! cargo run --release --example phase_diagram -- --coils 8 --extend docs/data/phase_diagram_n8.csv
 //! cargo run --release --example phase_diagram -- --check   # convergence, docs/ACCURACY.md
-//! cargo run --release --example phase_diagram -- --scene 89.8,10,0.05 [--scene …] [--pull F] [--forces]
+//! cargo run --release --example phase_diagram -- --scene 89.8,10,0.05 [--scene …] [--pull F] [--stretch DZ] [--forces]
 //! cargo run --release --example phase_diagram -- --coils 5 --scene 89,10,0.05 --fold-cusps
 //! ```
 //!
@@ -38,6 +38,12 @@
 //! with each pop-out's maximum force: a cross-check of the diagram, which
 //! counts the pop-outs that exist at any force (docs/ACCURACY.md: at
 //! negative ν the maximum-force folds rise far above the reference's).
+//! `--stretch DZ` stretches each `--scene` from rest under extension
+//! control to Δz = DZ instead (at most 2000 steps) and prints
+//! `stretched pop_outs=<count> to=<DZ> reached=<bool> max_forces=<…>`:
+//! along the same path, a stretch passes the pop-outs' maximum forces
+//! however high and ends where the rod is nearly straight (0.99: past
+//! every pop-out seen so far, at F/((2πn)²B) ≈ 1.6).
 //!
 //! `--forces` carries the reference pull's pop-outs (their two folds each,
 //! [`hockle::rod::CuspSearch::carry`]: along a staircase about the straight
@@ -72,7 +78,9 @@
 //! line `beyond … carried_max=<F;…> vanished=<k> accounted=<yes|partly|no>`
 //! says whether those that peak above the pull's force make up the
 //! difference (the carried forces checked against their mesh as
-//! `--forces` does).
+//! `--forces` does), and a line `stretch … stretched=<count>
+//! reached=<bool>` gives the count of the scene stretched to Δz = 0.99
+//! (as `--stretch`). `--random` stretches its scenes with fewer the same way.
 //!
 //! `--random K [--seed S] [--pull F]` pulls K random scenes about the
 //! reference (θ0 84–89.95°, A/B 0.5–100, ν −0.3–0.45; xorshift from S,
@@ -107,7 +115,7 @@ use hockle::rod::{Fixed, Followed, NikolaiRod, PhaseDiagram, Rod};
 /// The committed diagram of n = 4.
 const N4: &str = include_str!("../../docs/data/phase_diagram_n4.csv");
 fn usage() -> String {
-    "usage: phase_diagram [--coils N] [--out DIR] [--compute | --extend CSV | --check] [--scene THETA0_DEG,A_OVER_B,NU]… [--pull F] [--forces] [--force-map] [--cross-check] [--fold-cusps] [--random K [--seed S]]".into()
+    "usage: phase_diagram [--coils N] [--out DIR] [--compute | --extend CSV | --check] [--scene THETA0_DEG,A_OVER_B,NU]… [--pull F] [--stretch DZ] [--forces] [--force-map] [--cross-check] [--fold-cusps] [--random K [--seed S]]".into()
 }
 
 #[path = "../support/exit.rs"]
@@ -126,6 +134,7 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
         .join("hockle");
     let (mut coils, mut force, mut scenes, mut checks) = (4_u32, false, Vec::new(), false);
     let mut pull_to: Option<f64> = None;
+    let mut stretch_to: Option<f64> = None;
     let mut carry = false;
     let mut map = false;
     let mut cross = false;
@@ -145,6 +154,15 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
                         .ok()
                         .filter(|f| *f > 0.0 && f.is_finite())
                         .ok_or(format!("--pull {v}: a finite positive force F/((2πn)²B)"))?,
+                );
+            }
+            "--stretch" => {
+                let v = args.next().ok_or("--stretch needs an extension Δz")?;
+                stretch_to = Some(
+                    v.parse::<f64>()
+                        .ok()
+                        .filter(|z| *z > 0.0 && *z < 1.0)
+                        .ok_or(format!("--stretch {v}: an extension Δz in (0, 1)"))?,
                 );
             }
             "--extend" => {
@@ -332,6 +350,9 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
         if let Some(to) = pull_to {
             pull_scene(coils, (t, a, nu), to)?;
         }
+        if let Some(to) = stretch_to {
+            stretch_scene(coils, (t, a, nu), to)?;
+        }
         if let Some((family, pops)) = &reference {
             carry_to_scene(family, pops, (t, a, nu))?;
         }
@@ -404,4 +425,4 @@ use checked::checked_force;
 use convergence::check;
 
 use compute::{A_OVER_B, HALF_PI, carry_search, compute, reference_family};
-use pulls::{contradicted_by_pulls, pull_scene};
+use pulls::{contradicted_by_pulls, pull_scene, stretch_scene};

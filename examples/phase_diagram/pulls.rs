@@ -4,6 +4,7 @@
 use std::error::Error;
 
 use hockle::Stiffness;
+use hockle::load::Target;
 use hockle::rod::PhaseDiagram;
 use hockle::spring::{Model, RodModel, Spring};
 
@@ -94,6 +95,39 @@ pub(crate) fn pulled(
     Ok(RodModel::default().pull(&spring, to)?)
 }
 
+/// Where a stretch ends, Δz (extension control): past every pop-out of the
+/// scenes stretched so far, whose last maximum force comes at Δz ≤ 0.97
+/// (n = 4 at (87°, 10, −0.3), F/((2πn)²B) = 28.5), while the rod at 0.99
+/// pulls with F/((2πn)²B) ≈ 1.6 (docs/ACCURACY.md, "Stretched").
+pub(crate) const STRETCH_TO: f64 = 0.99;
+
+/// The step limit of a stretch: the stretches that pass every pop-out
+/// take 200–400 steps (n = 4); where the loops left in the rod slide near
+/// 90° at negative ν a stretch crawls (20 000 steps, 231 s, at (89.5°, 10,
+/// −0.2) without reaching its third maximum), and one stopped here keeps
+/// what it saw.
+pub(crate) const STRETCH_STEPS: usize = 2000;
+
+/// The scene (n coils, C by the Nikolai equality) stretched from rest to
+/// Δz = `to` under extension control by the default adaptive rod, at most
+/// [`STRETCH_STEPS`] steps. A pop-out's maximum force is no fold of the
+/// continuation here (the pull passes it with Δz rising), so where the
+/// pop-outs come at high forces a stretch sees them without the force
+/// pulled to them: n = 4 at (88°, 10, −0.2) sees 3 pop-outs, the third
+/// at F/((2πn)²B) = 3.37, ending at 1.66.
+pub(crate) fn stretched(
+    coils: u32,
+    (t, a, nu): Scene,
+    to: f64,
+) -> Result<hockle::spring::Response, Box<dyn Error + Send + Sync>> {
+    let spring = Spring::from_degrees(coils, t, Stiffness::nikolai(a, nu)?)?;
+    let run = RodModel::default()
+        .driver(&spring, Target::Extension(to))?
+        .max_steps(STRETCH_STEPS)
+        .run(())?;
+    Ok(RodModel::response(run)?)
+}
+
 /// How far either side in θ0 a count read differently marks a scene as
 /// near a line (the reading's own error, docs/ACCURACY.md).
 pub(crate) const NEAR_DEG: f64 = 0.1;
@@ -117,6 +151,27 @@ pub(crate) fn peak_forces(response: &hockle::spring::Response) -> Vec<String> {
         .collect()
 }
 
+/// `--stretch`: the scene stretched from rest to Δz = `to`
+/// ([`stretched`]), its pop-outs and their maximum forces.
+pub(crate) fn stretch_scene(
+    coils: u32,
+    (t, a, nu): (f64, f64, f64),
+    to: f64,
+) -> Result<(), Box<dyn Error + Send + Sync>> {
+    let response = stretched(coils, (t, a, nu), to)?;
+    let forces = peak_forces(&response);
+    println!(
+        "stretched pop_outs={} to={to} reached={} max_forces={}",
+        forces.len(),
+        response.reached_target(),
+        forces.join(";")
+    );
+    if !response.reached_target() {
+        eprintln!("  {}", response.termination());
+    }
+    Ok(())
+}
+
 /// `--pull`: the scene pulled from rest to F/((2πn)²B) = `to`, its
 /// pop-outs and their maximum forces.
 pub(crate) fn pull_scene(
@@ -136,4 +191,48 @@ pub(crate) fn pull_scene(
         eprintln!("  {}", response.termination());
     }
     Ok(())
+}
+
+/// Scenes where a pull to a force saw fewer pop-outs than the diagram
+/// counts, stretched to Δz = [`STRETCH_TO`] ([`stretched_past`]).
+#[derive(Default)]
+pub(crate) struct Stretched {
+    /// The stretch reached Δz and saw the diagram's count.
+    pub(crate) confirmed: usize,
+    /// The stretch reached Δz and saw fewer: the diagram counts a pop-out
+    /// (a fold pair) that the path from rest does not pass.
+    pub(crate) fewer: usize,
+    /// The stretch stopped short (its step limit, a Newton failure) with
+    /// no more than the diagram's count so far.
+    pub(crate) short: usize,
+}
+
+/// Stretches each scene of `fewer` ((scene, diagram's count, pull's
+/// count), where the pull saw fewer) to Δz = [`STRETCH_TO`] and prints `stretch theta0=<deg>
+/// a_over_b=<x> nu=<x> diagram=<count> stretched=<count> reached=<bool>
+/// max_forces=<F;…>`; a stretch that sees more pop-outs than the diagram
+/// counts is added to `contradicted`.
+pub(crate) fn stretched_past(
+    coils: u32,
+    fewer: &[((f64, f64, f64), usize, usize)],
+    contradicted: &mut Vec<(f64, f64, f64)>,
+) -> Result<Stretched, Box<dyn Error + Send + Sync>> {
+    let mut tally = Stretched::default();
+    for &((t, a, nu), diagram, _) in fewer {
+        let response = stretched(coils, (t, a, nu), STRETCH_TO)?;
+        let peaks = peak_forces(&response);
+        let reached = response.reached_target();
+        println!(
+            "stretch theta0={t} a_over_b={a} nu={nu} diagram={diagram} stretched={} reached={reached} max_forces={}",
+            peaks.len(),
+            peaks.join(";")
+        );
+        match (peaks.len(), reached) {
+            (k, _) if k > diagram => contradicted.push((t, a, nu)),
+            (k, true) if k == diagram => tally.confirmed += 1,
+            (_, true) => tally.fewer += 1,
+            (_, false) => tally.short += 1,
+        }
+    }
+    Ok(tally)
 }

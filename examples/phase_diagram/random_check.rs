@@ -5,7 +5,7 @@ use std::error::Error;
 
 use hockle::rod::PhaseDiagram;
 
-use super::pulls::{NEAR_DEG, peak_forces, pulled, read_near_line};
+use super::pulls::{NEAR_DEG, STRETCH_TO, peak_forces, pulled, read_near_line, stretched_past};
 
 /// The ranges of the random scenes: θ0 in degrees, log10 A/B, ν; about
 /// the reference, where the regions are.
@@ -21,7 +21,8 @@ const NU: (f64, f64) = (-0.3, 0.45);
 /// near_line=<bool> max_forces=<F;…>`, and a summary on standard error:
 /// how many as the diagram counts, fewer (pop-outs above the force, or not
 /// on the pull's path), near a line, and more (a contradiction, also
-/// returned as an error).
+/// returned as an error). The scenes with fewer are stretched to Δz =
+/// [`STRETCH_TO`] too (`stretch …` lines, [`stretched_past`]).
 pub fn run(
     coils: u32,
     diagram: &PhaseDiagram,
@@ -31,7 +32,8 @@ pub fn run(
 ) -> Result<(), Box<dyn Error + Send + Sync>> {
     let mut rnd = crate::common::uniform(seed);
     let mut draw = |(lo, hi): (f64, f64)| lo + (hi - lo) * rnd();
-    let (mut equal, mut fewer, mut near, mut unknown) = (0, 0, 0, 0);
+    let (mut equal, mut near, mut unknown) = (0, 0, 0);
+    let mut fewer = Vec::new();
     let mut more = Vec::new();
     for _ in 0..count {
         let t = draw(THETA0_DEG);
@@ -51,14 +53,20 @@ pub fn run(
             None => unknown += 1,
             Some(_) if near_line => near += 1,
             Some(c) if peaks.len() == c => equal += 1,
-            Some(c) if peaks.len() < c => fewer += 1,
+            Some(c) if peaks.len() < c => fewer.push(((t, a, nu), c, peaks.len())),
             Some(_) => more.push((t, a, nu)),
         }
     }
+    let stretch = stretched_past(coils, &fewer, &mut more)?;
     eprintln!(
         "n = {coils}, {count} random scenes (seed {seed}) pulled to F/((2πn)²B) = {force}: {equal} \
-         as the diagram counts, {fewer} with fewer, {near} within {NEAR_DEG}° of a line, {unknown} \
-         not resolved by the diagram, {} with more",
+         as the diagram counts, {} with fewer (stretched to Δz = {STRETCH_TO}: {} see the \
+         diagram's count, {} fewer, {} stop short), {near} within {NEAR_DEG}° of a line, \
+         {unknown} not resolved by the diagram, {} with more",
+        fewer.len(),
+        stretch.confirmed,
+        stretch.fewer,
+        stretch.short,
         more.len()
     );
     if more.is_empty() {
