@@ -40,10 +40,12 @@
 //! negative ν the maximum-force folds rise far above the reference's).
 //! `--stretch DZ` stretches each `--scene` from rest under extension
 //! control to Δz = DZ instead (at most 2000 steps) and prints
-//! `stretched pop_outs=<count> to=<DZ> reached=<bool> max_forces=<…>`:
-//! along the same path, a stretch passes the pop-outs' maximum forces
-//! however high and ends where the rod is nearly straight (0.99: past
-//! every pop-out seen so far, at F/((2πn)²B) ≈ 1.6).
+//! `stretched pop_outs=<count> to=<DZ> reached=<bool> past_pop_outs=<bool>
+//! end_force=<F> max_forces=<…>`: along the same path, a stretch passes
+//! the pop-outs' maximum forces however high; at Δz = 0.99 a rod past its
+//! pop-outs pulls with F/((2πn)²B) ≈ 1.6, one that still holds a loop
+//! with forces of order 10² (`past_pop_outs`: it ends below its last
+//! maximum force).
 //!
 //! `--forces` carries the reference pull's pop-outs (their two folds each,
 //! [`hockle::rod::CuspSearch::carry`]: along a staircase about the straight
@@ -79,8 +81,8 @@
 //! says whether those that peak above the pull's force make up the
 //! difference (the carried forces checked against their mesh as
 //! `--forces` does), and a line `stretch … stretched=<count>
-//! reached=<bool>` gives the count of the scene stretched to Δz = 0.99
-//! (as `--stretch`). `--random` stretches its scenes with fewer the same way.
+//! reached=<bool> past_pop_outs=<bool> …` gives the count of the scene
+//! stretched to Δz = 0.99 (as `--stretch`). `--random` stretches its scenes with fewer the same way.
 //!
 //! `--random K [--seed S] [--pull F]` pulls K random scenes about the
 //! reference (θ0 84–89.95°, A/B 0.5–100, ν −0.3–0.45; xorshift from S,

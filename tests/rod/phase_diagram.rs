@@ -684,6 +684,16 @@ fn a_stretch_passes_the_pop_outs_a_pull_to_a_force_stops_below() {
         s[2] > 3.0,
         "the third pop-out peaks above the pull's force: {s:?}"
     );
+    // past it: the rod nearly straight, no loop held (that would take
+    // forces of order 10² at Δz = 0.99; here 1.66)
+    let scale = stretched.curve().scale();
+    let end = stretched
+        .curve()
+        .points()
+        .last()
+        .unwrap()
+        .force_scaled(scale);
+    assert!(end < s[2], "ends at {end}, above its last maximum {s:?}");
     for (f, g) in p.iter().zip(&s) {
         assert!(
             (f - g).abs() < STRETCHED_PEAK,
