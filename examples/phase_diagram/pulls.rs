@@ -180,17 +180,13 @@ pub(crate) fn stretch_scene(
     to: f64,
 ) -> Result<(), Box<dyn Error + Send + Sync>> {
     let response = stretched(coils, (t, a, nu), to)?;
-    let forces = peak_forces(&response);
     let (past, end) = past_pop_outs(&response);
-    println!(
-        "stretched pop_outs={} to={to} reached={} past_pop_outs={past} end_force={end:.4} max_forces={}",
-        forces.len(),
-        response.reached_target(),
-        forces.join(";")
+    print_run(
+        "stretched",
+        to,
+        &response,
+        &format!(" past_pop_outs={past} end_force={end:.4}"),
     );
-    if !response.reached_target() {
-        eprintln!("  {}", response.termination());
-    }
     Ok(())
 }
 
@@ -201,10 +197,17 @@ pub(crate) fn pull_scene(
     (t, a, nu): (f64, f64, f64),
     to: f64,
 ) -> Result<(), Box<dyn Error + Send + Sync>> {
-    let response = pulled(coils, (t, a, nu), to)?;
-    let forces = peak_forces(&response);
+    print_run("pulled", to, &pulled(coils, (t, a, nu), to)?, "");
+    Ok(())
+}
+
+/// One line `<word> pop_outs=<count> to=<to> reached=<bool><extra>
+/// max_forces=<f1;f2;…>` for a pull or a stretch of a scene, and on
+/// standard error why it stopped short.
+fn print_run(word: &str, to: f64, response: &hockle::spring::Response, extra: &str) {
+    let forces = peak_forces(response);
     println!(
-        "pulled pop_outs={} to={to} reached={} max_forces={}",
+        "{word} pop_outs={} to={to} reached={}{extra} max_forces={}",
         forces.len(),
         response.reached_target(),
         forces.join(";")
@@ -212,7 +215,6 @@ pub(crate) fn pull_scene(
     if !response.reached_target() {
         eprintln!("  {}", response.termination());
     }
-    Ok(())
 }
 
 /// Scenes where a pull to a force saw fewer pop-outs than the diagram
