@@ -96,8 +96,8 @@ pub(crate) fn pulled(
 }
 
 /// Where a stretch ends, Δz (extension control): the rod nearly straight.
-/// Past its pop-outs it pulls there with F/((2πn)²B) ≈ 1.6 (n = 4 at
-/// (88°, 10, −0.2): 1.66, its last maximum 3.37); a loop still held at
+/// Past its pop-outs it pulls there with F/((2πn)²B) of 1.0–2.6 (n = 8
+/// to 2; n = 4 at (88°, 10, −0.2): 1.66, its last maximum 3.37); a loop still held at
 /// 0.99 takes forces of order 10² (n = 4 at (87.9°, 24.7, −0.184): 254,
 /// two loops left, its last maximum 17.2), so a stretch counts as past
 /// its pop-outs only where it ends below its last maximum force
@@ -221,21 +221,23 @@ fn print_run(word: &str, to: f64, response: &hockle::spring::Response, extra: &s
 /// counts, stretched to Δz = [`STRETCH_TO`] ([`stretched_past`]).
 #[derive(Default)]
 pub(crate) struct Stretched {
-    /// The stretch reached Δz and saw the diagram's count.
+    /// The stretch reached Δz past its pop-outs ([`past_pop_outs`]) and
+    /// saw the diagram's count.
     pub(crate) confirmed: usize,
     /// The stretch reached Δz past its pop-outs ([`past_pop_outs`]) and saw
     /// fewer: the diagram counts a pop-out (a fold pair) that the path from
     /// rest does not pass.
     pub(crate) fewer: usize,
     /// The stretch stopped short (its step limit, a Newton failure), or
-    /// reached Δz with a loop still held, with fewer than the diagram's
+    /// reached Δz with a loop still held, with no more than the diagram's
     /// count so far.
     pub(crate) short: usize,
 }
 
 /// Stretches each scene of `fewer` ((scene, diagram's count, pull's
-/// count), where the pull saw fewer) to Δz = [`STRETCH_TO`] and prints `stretch theta0=<deg>
-/// a_over_b=<x> nu=<x> diagram=<count> stretched=<count> reached=<bool>
+/// count), where the pull saw fewer) to Δz = [`STRETCH_TO`] and prints
+/// `stretch theta0=<deg> a_over_b=<x> nu=<x> diagram=<count>
+/// stretched=<count> reached=<bool> past_pop_outs=<bool> end_force=<F>
 /// max_forces=<F;…>`; a stretch that sees more pop-outs than the diagram
 /// counts is added to `contradicted`.
 pub(crate) fn stretched_past(
@@ -256,7 +258,7 @@ pub(crate) fn stretched_past(
         );
         match (peaks.len(), past) {
             (k, _) if k > diagram => contradicted.push((t, a, nu)),
-            (k, _) if k == diagram && reached => tally.confirmed += 1,
+            (k, true) if k == diagram => tally.confirmed += 1,
             (_, true) => tally.fewer += 1,
             _ => tally.short += 1,
         }
