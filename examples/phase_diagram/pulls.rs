@@ -97,11 +97,11 @@ pub(crate) fn pulled(
 
 /// Where a stretch ends, Δz (extension control): the rod nearly straight.
 /// Past its pop-outs it pulls there with F/((2πn)²B) of 1.0–2.6 (n = 8
-/// to 2; n = 4 at (88°, 10, −0.2): 1.66, its last maximum 3.37); a loop still held at
-/// 0.99 takes forces of order 10² (n = 4 at (87.9°, 24.7, −0.184): 254,
-/// two loops left, its last maximum 17.2), so a stretch counts as past
-/// its pop-outs only where it ends below its last maximum force
-/// ([`past_pop_outs`]).
+/// to 2; n = 4 at (88°, 10, −0.2): 1.66, its last maximum 3.37); a loop
+/// still held at 0.99 takes forces of order 10² (n = 4 at (87.9°, 24.7,
+/// −0.184): 254, two loops left, its last maximum 17.2), so a stretch
+/// counts as past its pop-outs only where it ends below its last maximum
+/// force ([`past_pop_outs`]).
 pub(crate) const STRETCH_TO: f64 = 0.99;
 
 /// The step limit of a stretch: the stretches that pass every pop-out

@@ -637,12 +637,7 @@ fn a_pop_out_a_pull_misses_peaks_above_its_load_and_a_longer_pull_meets_it() {
     let spring = Spring::from_degrees(2, t, Stiffness::nikolai(a, nu).unwrap()).unwrap();
     let longer = RodModel::default().pull(&spring, f + 1.0).unwrap();
     assert!(longer.reached_target(), "{}", longer.termination());
-    let scale = longer.curve().scale();
-    let peaks: Vec<f64> = longer
-        .pop_outs()
-        .iter()
-        .map(|p| p.max.point.force_scaled(scale))
-        .collect();
+    let peaks = peak_forces(&longer);
     assert_eq!(peaks.len(), 1, "{peaks:?}");
     assert!(
         (peaks[0] - f).abs() < CARRIED_HIGH_FOLD,
@@ -665,20 +660,13 @@ fn a_stretch_passes_the_pop_outs_a_pull_to_a_force_stops_below() {
     let (t, a, nu) = (88.0, 10.0, -0.2);
     assert_eq!(predicted_away_from_lines(&d, t, a, nu), 3);
     let spring = Spring::from_degrees(4, t, Stiffness::nikolai(a, nu).unwrap()).unwrap();
-    let peaks = |r: &hockle::spring::Response| -> Vec<f64> {
-        let scale = r.curve().scale();
-        r.pop_outs()
-            .iter()
-            .map(|p| p.max.point.force_scaled(scale))
-            .collect()
-    };
     let pulled = RodModel::default().pull(&spring, 3.0).unwrap();
     assert!(pulled.reached_target(), "{}", pulled.termination());
     let stretched = RodModel::default()
         .pull_to(&spring, Target::Extension(0.99))
         .unwrap();
     assert!(stretched.reached_target(), "{}", stretched.termination());
-    let (p, s) = (peaks(&pulled), peaks(&stretched));
+    let (p, s) = (peak_forces(&pulled), peak_forces(&stretched));
     assert_eq!((p.len(), s.len()), (2, 3), "pulled {p:?}, stretched {s:?}");
     assert!(
         s[2] > 3.0,
@@ -700,6 +688,16 @@ fn a_stretch_passes_the_pop_outs_a_pull_to_a_force_stops_below() {
             "pulled {p:?}, stretched {s:?}"
         );
     }
+}
+
+/// The maximum forces F/((2πn)²B) of a response's pop-outs, in curve
+/// order.
+fn peak_forces(r: &hockle::spring::Response) -> Vec<f64> {
+    let scale = r.curve().scale();
+    r.pop_outs()
+        .iter()
+        .map(|p| p.max.point.force_scaled(scale))
+        .collect()
 }
 
 /// A stretch's maximum force is the vertex of the parabola through the
