@@ -268,6 +268,22 @@ pub enum Error {
         /// The limit ([`crate::continuation::Continuation::max_angle`]).
         max_angle: f64,
     },
+    /// Even at the minimum step, the corrector's Newton stopped at its
+    /// rounding floor farther from its predictor than a step on the branch
+    /// can move (a nearly free mode, such as a loop sliding along a rod,
+    /// let it wander): its points would be noise along that mode, with
+    /// folds where the noise turns.
+    #[error(
+        "Newton left the point at its rounding floor {drift:.3e} steps from its predictor at \
+         the minimum step (at most {allowed} allowed): it slides along a nearly free mode, not \
+         along the branch"
+    )]
+    CorrectorDrifted {
+        /// The distance from the predictor, in steps.
+        drift: f64,
+        /// The most allowed.
+        allowed: f64,
+    },
     /// Accepted continuation steps stopped moving the solution: the
     /// parameter and both coordinates of the diagram came out within their
     /// rounding (4 ulp) of the previous point's on successive steps. The step is

@@ -182,6 +182,9 @@ pub(super) struct Corrected {
     pub(super) tangent: State,
     pub(super) det: Det,
     pub(super) iterations: u32,
+    /// Whether Newton stopped at its rounding floor above its tolerance
+    /// and the point was kept there (`stuck`).
+    pub(super) at_floor: bool,
 }
 
 impl<P: Problem + ?Sized> Steps<'_, P> {
@@ -254,6 +257,7 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
         }
         let stats = self.corrector_newton(&mut x, reuse)?;
         self.newton_iterations += u64::from(stats.iterations);
+        let at_floor = stats.correction > self.opts.tol;
         if let Some(tol) = self.cont.tolerance
             && self.sys.pinned_modes() > 0
         {
@@ -288,6 +292,7 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
                     log_abs: f64::NAN,
                 },
                 iterations: stats.iterations,
+                at_floor,
             });
         }
         let det = self.sys.factor(&x)?;
@@ -299,6 +304,7 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
             tangent: t,
             det,
             iterations: stats.iterations,
+            at_floor,
         })
     }
 

@@ -293,6 +293,7 @@ pub fn check_pull(r: &mut Report, run: &PullRun, max_steps: usize, what: &dyn Fn
                         | Error::NonFinite { .. }
                         | Error::StepAngleTooLarge { .. }
                         | Error::NotARod { .. }
+                        | Error::CorrectorDrifted { .. }
                 )
         }
         _ => false,

@@ -419,7 +419,9 @@ fn rod_pull(g: &mut Gen, r: &mut Report, spring: &Spring, t: Target, valid_targe
                     model_refusal(error)
                         || matches!(
                             error,
-                            Error::StepAngleTooLarge { .. } | Error::NotARod { .. }
+                            Error::StepAngleTooLarge { .. }
+                                | Error::NotARod { .. }
+                                | Error::CorrectorDrifted { .. }
                         )
                 }
                 _ => false,
