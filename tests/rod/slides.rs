@@ -93,6 +93,17 @@ fn pinning_is_off_by_default_and_says_nothing() {
     assert!(!run.to_string().contains("pinned"));
 }
 
+/// A rod of `coils` at θ0 = 89.5°, A/B = 100, ν = 0.05 (C by Nikolai's
+/// equality), where the loops left past the cascade slide.
+fn stiff_at_89_5(coils: u32) -> Rod {
+    Rod::new(
+        coils,
+        89.5_f64.to_radians(),
+        Stiffness::nikolai(100.0, 0.05).unwrap(),
+    )
+    .unwrap()
+}
+
 /// Past its sixth pop-out, n = 8 at (89.5°, A/B = 100, ν = 0.05) has loops
 /// in the rod that slide nearly freely, and Newton's corrections stall at
 /// their rounding floor, within a hundred times the tolerance (1e-10). Such
@@ -104,14 +115,8 @@ fn pinning_is_off_by_default_and_says_nothing() {
 /// counts there (docs/data/phase_diagram_n8.csv).
 #[test]
 fn a_pull_past_sliding_loops_reaches_its_load_within_the_tolerance() {
-    let rod = Rod::new(
-        8,
-        89.5_f64.to_radians(),
-        Stiffness::nikolai(100.0, 0.05).unwrap(),
-    )
-    .unwrap();
     let tol = 1e-6;
-    let run = Pull::new(rod, Target::Force(8.0))
+    let run = Pull::new(stiff_at_89_5(8), Target::Force(8.0))
         .tolerance(tol)
         .run(())
         .unwrap();
@@ -128,13 +133,7 @@ fn a_pull_past_sliding_loops_reaches_its_load_within_the_tolerance() {
 /// the diagram's six pop-outs (docs/data/phase_diagram_n7.csv).
 #[test]
 fn a_pull_whose_loops_slide_freely_ends_past_its_maxima_with_a_typed_failure() {
-    let rod = Rod::new(
-        7,
-        89.5_f64.to_radians(),
-        Stiffness::nikolai(100.0, 0.05).unwrap(),
-    )
-    .unwrap();
-    let run = Pull::new(rod, Target::Force(30.0))
+    let run = Pull::new(stiff_at_89_5(7), Target::Force(30.0))
         .tolerance(1e-6)
         .run(())
         .unwrap();
