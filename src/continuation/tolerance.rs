@@ -37,8 +37,9 @@ const MAX_DRIFT: f64 = 0.2;
 /// hyperplane lies about κΔs²/2 from the predictor, so one a whole step
 /// away is noise along a nearly free mode, not a point of the branch.
 /// Measured: such points drift 0.23–23 steps where loops slide freely (n = 6
-/// at (89.8°, 10, −0.1) stretched), the last resort's kept points 0.27 (n = 7
-/// at (89.5°, 100, 0.05) pulled to 30, `tests/rod/slides.rs`).
+/// at (89.8°, 10, −0.1) stretched); on n = 7 at (89.5°, 100, 0.05) pulled to
+/// 30 (`tests/rod/slides.rs`) one 0.27 steps away is kept, and the run ends
+/// two steps later at 20.
 const FLOOR_DRIFT: f64 = 1.0;
 
 /// Accepted steps between two mesh checks at most.

@@ -127,8 +127,9 @@ fn a_pull_past_sliding_loops_reaches_its_load_within_the_tolerance() {
 /// n = 7 at (89.5°, A/B = 100, ν = 0.05) pulled to F/((2πn)²B) = 30: past
 /// its sixth pop-out's maximum force the loops left in the rod slide, and
 /// at the shortest step Newton stops at its rounding floor ever farther
-/// from its predictor (20 steps away). Such points were kept and their
-/// noise made folds; now the run ends there with a typed failure
+/// from its predictor (20 steps away). Such points were kept (the run's
+/// interpolation estimate reached 3.3e-3 before its Newton diverged at the
+/// shortest step); now the run ends there with a typed failure
 /// (`Error::CorrectorDrifted`), keeping its points. The six maxima are
 /// the diagram's six pop-outs (docs/data/phase_diagram_n7.csv).
 #[test]
