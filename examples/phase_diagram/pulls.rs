@@ -6,7 +6,7 @@ use std::error::Error;
 use hockle::Stiffness;
 use hockle::load::Target;
 use hockle::rod::PhaseDiagram;
-use hockle::spring::{Model, RodModel, Spring};
+use hockle::spring::{RodModel, Spring};
 
 /// The scenes a computed diagram is checked on: about the reference,
 /// where the regions are narrowest ((θ0°, A/B, ν)).
@@ -88,11 +88,43 @@ pub(crate) fn first_excess(
 /// of a diagram against pulls.
 pub(crate) fn pulled(
     coils: u32,
-    (t, a, nu): Scene,
+    scene: Scene,
     to: f64,
 ) -> Result<hockle::spring::Response, Box<dyn Error + Send + Sync>> {
+    Ok(ran(coils, scene, Target::Force(to), None)?.response)
+}
+
+/// A pull or a stretch of a scene: the spring's response and what the
+/// continuation took to get there.
+pub(crate) struct Ran {
+    pub(crate) response: hockle::spring::Response,
+    /// Accepted continuation steps ([`hockle::rod::PullRun::steps`]).
+    pub(crate) steps: usize,
+    /// Rejected (retried) steps.
+    pub(crate) rejected: usize,
+}
+
+/// The scene (n coils, C by the Nikolai equality) driven from rest to
+/// `target` by the default adaptive rod (at most `max_steps` steps where
+/// given).
+fn ran(
+    coils: u32,
+    (t, a, nu): Scene,
+    target: Target,
+    max_steps: Option<usize>,
+) -> Result<Ran, Box<dyn Error + Send + Sync>> {
     let spring = Spring::from_degrees(coils, t, Stiffness::nikolai(a, nu)?)?;
-    Ok(RodModel::default().pull(&spring, to)?)
+    let mut pull = RodModel::default().driver(&spring, target)?;
+    if let Some(limit) = max_steps {
+        pull = pull.max_steps(limit);
+    }
+    let run = pull.run(())?;
+    let (steps, rejected) = (run.steps(), run.rejected());
+    Ok(Ran {
+        response: RodModel::response(run)?,
+        steps,
+        rejected,
+    })
 }
 
 /// Where a stretch ends, Δz (extension control): the rod nearly straight.
@@ -120,15 +152,10 @@ pub(crate) const STRETCH_STEPS: usize = 2000;
 /// at F/((2πn)²B) = 3.37, ending at 1.66.
 pub(crate) fn stretched(
     coils: u32,
-    (t, a, nu): Scene,
+    scene: Scene,
     to: f64,
-) -> Result<hockle::spring::Response, Box<dyn Error + Send + Sync>> {
-    let spring = Spring::from_degrees(coils, t, Stiffness::nikolai(a, nu)?)?;
-    let run = RodModel::default()
-        .driver(&spring, Target::Extension(to))?
-        .max_steps(STRETCH_STEPS)
-        .run(())?;
-    Ok(RodModel::response(run)?)
+) -> Result<Ran, Box<dyn Error + Send + Sync>> {
+    ran(coils, scene, Target::Extension(to), Some(STRETCH_STEPS))
 }
 
 /// How far either side in θ0 a count read differently marks a scene as
@@ -179,12 +206,12 @@ pub(crate) fn stretch_scene(
     (t, a, nu): (f64, f64, f64),
     to: f64,
 ) -> Result<(), Box<dyn Error + Send + Sync>> {
-    let response = stretched(coils, (t, a, nu), to)?;
-    let (past, end) = past_pop_outs(&response);
+    let stretch = stretched(coils, (t, a, nu), to)?;
+    let (past, end) = past_pop_outs(&stretch.response);
     print_run(
         "stretched",
         to,
-        &response,
+        &stretch,
         &format!(" past_pop_outs={past} end_force={end:.4}"),
     );
     Ok(())
@@ -197,20 +224,24 @@ pub(crate) fn pull_scene(
     (t, a, nu): (f64, f64, f64),
     to: f64,
 ) -> Result<(), Box<dyn Error + Send + Sync>> {
-    print_run("pulled", to, &pulled(coils, (t, a, nu), to)?, "");
+    let pull = ran(coils, (t, a, nu), Target::Force(to), None)?;
+    print_run("pulled", to, &pull, "");
     Ok(())
 }
 
 /// One line `<word> pop_outs=<count> to=<to> reached=<bool><extra>
-/// max_forces=<f1;f2;…>` for a pull or a stretch of a scene, and on
-/// standard error why it stopped short.
-fn print_run(word: &str, to: f64, response: &hockle::spring::Response, extra: &str) {
+/// max_forces=<f1;f2;…> steps=<accepted> rejected=<count>` for a pull or
+/// a stretch of a scene, and on standard error why it stopped short.
+fn print_run(word: &str, to: f64, ran: &Ran, extra: &str) {
+    let response = &ran.response;
     let forces = peak_forces(response);
     println!(
-        "{word} pop_outs={} to={to} reached={}{extra} max_forces={}",
+        "{word} pop_outs={} to={to} reached={}{extra} max_forces={} steps={} rejected={}",
         forces.len(),
         response.reached_target(),
-        forces.join(";")
+        forces.join(";"),
+        ran.steps,
+        ran.rejected
     );
     if !response.reached_target() {
         eprintln!("  {}", response.termination());
@@ -238,7 +269,7 @@ pub(crate) struct Stretched {
 /// count), where the pull saw fewer) to Δz = [`STRETCH_TO`] and prints
 /// `stretch theta0=<deg> a_over_b=<x> nu=<x> diagram=<count>
 /// stretched=<count> reached=<bool> past_pop_outs=<bool> end_force=<F>
-/// max_forces=<F;…>`; a stretch that sees more pop-outs than the diagram
+/// max_forces=<F;…> steps=<accepted> rejected=<count>`; a stretch that sees more pop-outs than the diagram
 /// counts is added to `contradicted`.
 pub(crate) fn stretched_past(
     coils: u32,
@@ -247,12 +278,16 @@ pub(crate) fn stretched_past(
 ) -> Result<Stretched, Box<dyn Error + Send + Sync>> {
     let mut tally = Stretched::default();
     for &((t, a, nu), diagram, _) in fewer {
-        let response = stretched(coils, (t, a, nu), STRETCH_TO)?;
+        let Ran {
+            response,
+            steps,
+            rejected,
+        } = stretched(coils, (t, a, nu), STRETCH_TO)?;
         let peaks = peak_forces(&response);
         let reached = response.reached_target();
         let (past, end) = past_pop_outs(&response);
         println!(
-            "stretch theta0={t} a_over_b={a} nu={nu} diagram={diagram} stretched={} reached={reached} past_pop_outs={past} end_force={end:.4} max_forces={}",
+            "stretch theta0={t} a_over_b={a} nu={nu} diagram={diagram} stretched={} reached={reached} past_pop_outs={past} end_force={end:.4} max_forces={} steps={steps} rejected={rejected}",
             peaks.len(),
             peaks.join(";")
         );
