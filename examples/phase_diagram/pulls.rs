@@ -170,11 +170,11 @@ pub(crate) const STRETCH_STEPS: usize = 2000;
 /// Δz = `to` under extension control by the default adaptive rod, at most
 /// [`STRETCH_STEPS`] steps; where that stops short of Δz, stretched again
 /// at each of [`RETRY_TOLERANCES`] until one reaches Δz (else the default
-/// run is kept). A pop-out's
-/// maximum force is no fold of the continuation here (the pull passes it
-/// with Δz rising), so where the pop-outs come at high forces a stretch
-/// sees them without the force pulled to them: n = 4 at (88°, 10, −0.2)
-/// sees 3 pop-outs, the third at F/((2πn)²B) = 3.37, ending at 1.66.
+/// run is kept). A pop-out's maximum force is no fold of the continuation
+/// here (the pull passes it with Δz rising), so where the pop-outs come at
+/// high forces a stretch sees them without the force pulled to them: n = 4
+/// at (88°, 10, −0.2) sees 3 pop-outs, the third at F/((2πn)²B) = 3.37,
+/// ending at 1.66.
 pub(crate) fn stretched(
     coils: u32,
     scene: Scene,
@@ -275,8 +275,8 @@ pub(crate) fn pull_scene(
 
 /// One line `<word> pop_outs=<count> to=<to> reached=<bool><extra>
 /// max_forces=<f1;f2;…> steps=<accepted> rejected=<count> tolerance=<tol>
-/// estimate=<curve error>` for a pull or a stretch of a scene, and on standard error why it
-/// stopped short.
+/// estimate=<curve error>` for a pull or a stretch of a scene, and on
+/// standard error why it stopped short.
 fn print_run(word: &str, to: f64, ran: &Ran, extra: &str) {
     let response = &ran.response;
     let forces = peak_forces(response);
@@ -317,8 +317,9 @@ pub(crate) struct Stretched {
 /// `stretch theta0=<deg> a_over_b=<x> nu=<x> diagram=<count>
 /// stretched=<count> reached=<bool> past_pop_outs=<bool> end_force=<F>
 /// max_forces=<F;…> steps=<accepted> rejected=<count> tolerance=<tol>
-/// estimate=<curve error>` (of the stretch kept, [`stretched`]); a stretch that sees more pop-outs than the diagram
-/// counts is added to `contradicted`.
+/// estimate=<curve error>` (of the stretch kept, [`stretched`]); a stretch
+/// that sees more pop-outs than the diagram counts is added to
+/// `contradicted`.
 pub(crate) fn stretched_past(
     coils: u32,
     fewer: &[((f64, f64, f64), usize, usize)],
