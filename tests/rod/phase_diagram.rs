@@ -674,13 +674,7 @@ fn a_stretch_passes_the_pop_outs_a_pull_to_a_force_stops_below() {
     );
     // past it: the rod nearly straight, no loop held (that would take
     // forces of order 10² at Δz = 0.99; here 1.66)
-    let scale = stretched.curve().scale();
-    let end = stretched
-        .curve()
-        .points()
-        .last()
-        .unwrap()
-        .force_scaled(scale);
+    let end = end_force(&stretched);
     assert!(end < s[2], "ends at {end}, above its last maximum {s:?}");
     for (f, g) in p.iter().zip(&s) {
         assert!(
@@ -713,17 +707,17 @@ fn a_looser_stretch_passes_loops_that_slide() {
     assert!(stretched.reached_target(), "{}", stretched.termination());
     let s = peak_forces(&stretched);
     assert_eq!(s.len(), predicted, "stretched {s:?}");
-    let scale = stretched.curve().scale();
-    let end = stretched
-        .curve()
-        .points()
-        .last()
-        .unwrap()
-        .force_scaled(scale);
+    let end = end_force(&stretched);
     assert!(
         end < s[predicted - 1],
         "ends at {end}, above its last maximum {s:?}"
     );
+}
+
+/// The force F/((2πn)²B) of a response's last point.
+fn end_force(r: &hockle::spring::Response) -> f64 {
+    let scale = r.curve().scale();
+    r.curve().points().last().unwrap().force_scaled(scale)
 }
 
 /// The maximum forces F/((2πn)²B) of a response's pop-outs, in curve
