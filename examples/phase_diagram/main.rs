@@ -45,8 +45,9 @@
 //! `stretched pop_outs=<count> to=<DZ> reached=<bool> past_pop_outs=<bool>
 //! end_force=<F> max_forces=<…> steps=<accepted> rejected=<count>
 //! tolerance=<tol> estimate=<error>` (a stretch that stops short is run
-//! again at 1e-5, then 1e-4, and the first that reaches Δz kept): along the same path, a stretch passes
-//! the pop-outs' maximum forces however high; at Δz = 0.99 a rod past its
+//! again at 1e-5, then 1e-4, and the first that reaches Δz kept): along
+//! the same path, a stretch passes the pop-outs' maximum forces however
+//! high; at Δz = 0.99 a rod past its
 //! pop-outs pulls with F/((2πn)²B) of 1.0–2.6 (n = 8 to 2), one that still holds a loop
 //! with forces of order 10² (`past_pop_outs`: it ends below its last
 //! maximum force).

@@ -106,6 +106,21 @@ pub(crate) struct Ran {
     pub(crate) tolerance: f64,
 }
 
+impl Ran {
+    /// The end of a `pulled`/`stretched`/`stretch` line: `max_forces=<f1;f2;…>
+    /// steps=<accepted> rejected=<count> tolerance=<tol> estimate=<curve error>`.
+    fn fields(&self) -> String {
+        format!(
+            "max_forces={} steps={} rejected={} tolerance={:e} estimate={:.1e}",
+            peak_forces(&self.response).join(";"),
+            self.steps,
+            self.rejected,
+            self.tolerance,
+            self.response.estimated_error().unwrap_or(f64::NAN)
+        )
+    }
+}
+
 /// The scene (n coils, C by the Nikolai equality) driven from rest to
 /// `target` by the adaptive rod at `tolerance` (at most `max_steps` steps
 /// where given).
@@ -279,16 +294,11 @@ pub(crate) fn pull_scene(
 /// standard error why it stopped short.
 fn print_run(word: &str, to: f64, ran: &Ran, extra: &str) {
     let response = &ran.response;
-    let forces = peak_forces(response);
     println!(
-        "{word} pop_outs={} to={to} reached={}{extra} max_forces={} steps={} rejected={} tolerance={:e} estimate={:.1e}",
-        forces.len(),
+        "{word} pop_outs={} to={to} reached={}{extra} {}",
+        response.pop_outs().len(),
         response.reached_target(),
-        forces.join(";"),
-        ran.steps,
-        ran.rejected,
-        ran.tolerance,
-        response.estimated_error().unwrap_or(f64::NAN)
+        ran.fields()
     );
     if !response.reached_target() {
         eprintln!("  {}", response.termination());
@@ -327,22 +337,15 @@ pub(crate) fn stretched_past(
 ) -> Result<Stretched, Box<dyn Error + Send + Sync>> {
     let mut tally = Stretched::default();
     for &((t, a, nu), diagram, _) in fewer {
-        let Ran {
-            response,
-            steps,
-            rejected,
-            tolerance,
-        } = stretched(coils, (t, a, nu), STRETCH_TO)?;
-        let peaks = peak_forces(&response);
-        let reached = response.reached_target();
-        let (past, end) = past_pop_outs(&response);
+        let stretch = stretched(coils, (t, a, nu), STRETCH_TO)?;
+        let count = stretch.response.pop_outs().len();
+        let reached = stretch.response.reached_target();
+        let (past, end) = past_pop_outs(&stretch.response);
         println!(
-            "stretch theta0={t} a_over_b={a} nu={nu} diagram={diagram} stretched={} reached={reached} past_pop_outs={past} end_force={end:.4} max_forces={} steps={steps} rejected={rejected} tolerance={tolerance:e} estimate={:.1e}",
-            peaks.len(),
-            peaks.join(";"),
-            response.estimated_error().unwrap_or(f64::NAN)
+            "stretch theta0={t} a_over_b={a} nu={nu} diagram={diagram} stretched={count} reached={reached} past_pop_outs={past} end_force={end:.4} {}",
+            stretch.fields()
         );
-        match (peaks.len(), past) {
+        match (count, past) {
             (k, _) if k > diagram => contradicted.push((t, a, nu)),
             (k, true) if k == diagram => tally.confirmed += 1,
             (_, true) => tally.fewer += 1,
