@@ -91,7 +91,7 @@ pub(crate) fn pulled(
     scene: Scene,
     to: f64,
 ) -> Result<hockle::spring::Response, Box<dyn Error + Send + Sync>> {
-    Ok(ran(coils, scene, Target::Force(to), None, TOLERANCE)?.response)
+    Ok(ran(coils, scene, Target::Force(to), None, TOLERANCE, None)?.response)
 }
 
 /// A pull or a stretch of a scene: the spring's response and what the
@@ -104,18 +104,23 @@ pub(crate) struct Ran {
     pub(crate) rejected: usize,
     /// The run's tolerance ([`RodModel::tolerance`]).
     pub(crate) tolerance: f64,
+    /// The loosest tolerance the run went on at past a failed corrector
+    /// ([`hockle::rod::Pull::relax_to`]); its own where it did not.
+    pub(crate) relaxed_to: f64,
 }
 
 impl Ran {
     /// The end of a `pulled`/`stretched`/`stretch` line: `max_forces=<f1;f2;…>
-    /// steps=<accepted> rejected=<count> tolerance=<tol> estimate=<curve error>`.
+    /// steps=<accepted> rejected=<count> tolerance=<tol> relaxed_to=<tol>
+    /// estimate=<curve error>`.
     fn fields(&self) -> String {
         format!(
-            "max_forces={} steps={} rejected={} tolerance={:e} estimate={:.1e}",
+            "max_forces={} steps={} rejected={} tolerance={:e} relaxed_to={:e} estimate={:.1e}",
             peak_forces(&self.response).join(";"),
             self.steps,
             self.rejected,
             self.tolerance,
+            self.relaxed_to,
             self.response.estimated_error().unwrap_or(f64::NAN)
         )
     }
@@ -123,47 +128,64 @@ impl Ran {
 
 /// The scene (n coils, C by the Nikolai equality) driven from rest to
 /// `target` by the adaptive rod at `tolerance` (at most `max_steps` steps
-/// where given).
+/// where given), going on past a failed corrector at looser tolerances up
+/// to `relax_to` where given.
 fn ran(
     coils: u32,
     (t, a, nu): Scene,
     target: Target,
     max_steps: Option<usize>,
     tolerance: f64,
+    relax_to: Option<f64>,
 ) -> Result<Ran, Box<dyn Error + Send + Sync>> {
     let spring = Spring::from_degrees(coils, t, Stiffness::nikolai(a, nu)?)?;
-    let mut pull = RodModel::default()
-        .tolerance(tolerance)
-        .driver(&spring, target)?;
+    let mut model = RodModel::default().tolerance(tolerance);
+    if let Some(loosest) = relax_to {
+        model = model.relax_to(loosest);
+    }
+    let mut pull = model.driver(&spring, target)?;
     if let Some(limit) = max_steps {
         pull = pull.max_steps(limit);
     }
     let run = pull.run(())?;
     let (steps, rejected) = (run.steps(), run.rejected());
+    let relaxed_to = run.relaxations().last().map_or(tolerance, |r| r.tolerance);
     Ok(Ran {
         response: RodModel::response(run)?,
         steps,
         rejected,
         tolerance,
+        relaxed_to,
     })
 }
 
 /// The rod's default tolerance, at which every pull and stretch runs first.
 const TOLERANCE: f64 = Pull::DEFAULT_TOLERANCE;
 
-/// The tolerances a stretch that stops short is run again at, in turn.
-/// Where loops slide (near 90° at ν < 0, or at A/B = 100 past most
+/// The tolerances a stretch that stops short is run again at from rest,
+/// in turn. Where loops slide (near 90° at ν < 0, or at A/B = 100 past most
 /// pop-outs) Newton's corrections stall at 1e-9–1e-8 relative, above the
-/// corrector's 1e-10 at the default 1e-6, and the default stretch ends
-/// with `CorrectorDrifted` or a Newton failure at its shortest step; the
-/// looser runs' correctors (1e-9, 1e-8) take those points: of the 14
-/// grid stretches (n = 5–8) the default left short, 6 reach Δz = 0.99 at
-/// 1e-5 and 2 more at 1e-4 (7 Dec; at 1e-3 they fail sooner: n = 5 at
+/// corrector's 1e-10 at the default 1e-6, and the default stretch ends with
+/// `CorrectorDrifted` or a Newton failure at its shortest step; the looser
+/// runs' correctors (1e-9, 1e-8) take those points: of the 14 grid
+/// stretches (n = 5–8) the default left short, 6 reach Δz = 0.99 at 1e-5
+/// and 2 more at 1e-4 (7 Dec; at 1e-3 they fail sooner: n = 5 at
 /// (89.8°, 10, −0.2) sees no pop-out before Newton diverges). The counts
 /// need no more: the maximum forces of these stretches lie at least 0.04
 /// apart in F/((2πn)²B), and the retried runs' maxima agree with the
 /// default's to 3e-4 where both see them (docs/ACCURACY.md, "Stretched").
 const RETRY_TOLERANCES: [f64; 2] = [1e-5, 1e-4];
+
+/// Where every retry stops short: the default stretch going on from its
+/// failed corrector at looser tolerances up to this
+/// ([`hockle::rod::Pull::relax_to`]: 1e-5, then 1e-4), the last resort, not
+/// the first. From the failure the run is already where loops slide, and a
+/// looser corrector can follow the slide: n = 7 at (89°, 100, 0.05) went on
+/// from there along a branch that retraced its last pop-out in the plot
+/// (eleven "maxima", ending at F/((2πn)²B) = 83 still holding two loops),
+/// where the retry from rest at 1e-5 passes the six the diagram counts.
+/// Where all three retries fail it passes n = 8 at (89.8°, 10, −0.1).
+const RELAX_TO: f64 = 1e-4;
 
 /// Where a stretch ends, Δz (extension control): the rod nearly straight.
 /// Past its pop-outs it pulls there with F/((2πn)²B) of 1.0–2.6 (n = 8
@@ -184,7 +206,8 @@ pub(crate) const STRETCH_STEPS: usize = 2000;
 /// The scene (n coils, C by the Nikolai equality) stretched from rest to
 /// Δz = `to` under extension control by the default adaptive rod, at most
 /// [`STRETCH_STEPS`] steps; where that stops short of Δz, stretched again
-/// at each of [`RETRY_TOLERANCES`] until one reaches Δz (else the default
+/// at each of [`RETRY_TOLERANCES`] until one reaches Δz, and last going on
+/// from the default's failed corrector up to [`RELAX_TO`] (else the default
 /// run is kept). A pop-out's maximum force is no fold of the continuation
 /// here (the pull passes it with Δz rising), so where the pop-outs come at
 /// high forces a stretch sees them without the force pulled to them: n = 4
@@ -195,26 +218,32 @@ pub(crate) fn stretched(
     scene: Scene,
     to: f64,
 ) -> Result<Ran, Box<dyn Error + Send + Sync>> {
-    let stretch = |tol| {
+    let stretch = |tol, relax| {
         ran(
             coils,
             scene,
             Target::Extension(to),
             Some(STRETCH_STEPS),
             tol,
+            relax,
         )
     };
-    let first = stretch(TOLERANCE)?;
+    let first = stretch(TOLERANCE, None)?;
     if first.response.reached_target() {
         return Ok(first);
     }
     for tol in RETRY_TOLERANCES {
-        let again = stretch(tol)?;
+        let again = stretch(tol, None)?;
         if again.response.reached_target() {
             return Ok(again);
         }
     }
-    Ok(first)
+    let relaxed = stretch(TOLERANCE, Some(RELAX_TO))?;
+    Ok(if relaxed.response.reached_target() {
+        relaxed
+    } else {
+        first
+    })
 }
 
 /// How far either side in θ0 a count read differently marks a scene as
@@ -283,7 +312,7 @@ pub(crate) fn pull_scene(
     (t, a, nu): (f64, f64, f64),
     to: f64,
 ) -> Result<(), Box<dyn Error + Send + Sync>> {
-    let pull = ran(coils, (t, a, nu), Target::Force(to), None, TOLERANCE)?;
+    let pull = ran(coils, (t, a, nu), Target::Force(to), None, TOLERANCE, None)?;
     print_run("pulled", to, &pull, "");
     Ok(())
 }

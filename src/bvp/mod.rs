@@ -61,7 +61,7 @@
 
 #![allow(clippy::needless_range_loop)]
 
-mod adapt;
+pub(crate) mod adapt;
 pub mod classic;
 mod collocation;
 mod guess;

@@ -110,6 +110,24 @@ impl ErrorEstimate {
     pub fn overall(&self) -> f64 {
         (self.located + self.solves()).max(self.curve())
     }
+
+    /// The estimate of a run continued by another from its last point
+    /// (`later`): the larger of each error, the checks and remeshes of
+    /// both, the mesh at the end of `later` and the largest of either.
+    #[must_use]
+    pub(crate) fn followed_by(&self, later: &Self) -> Self {
+        Self {
+            mesh: self.mesh.max(later.mesh),
+            located: self.located.max(later.located),
+            interpolation: self.interpolation.max(later.interpolation),
+            pinned: self.pinned.max(later.pinned),
+            stalled: self.stalled.max(later.stalled),
+            checks: self.checks + later.checks,
+            remeshes: self.remeshes + later.remeshes,
+            intervals: later.intervals,
+            max_intervals: self.max_intervals.max(later.max_intervals),
+        }
+    }
 }
 
 impl core::fmt::Display for ErrorEstimate {

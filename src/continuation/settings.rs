@@ -298,6 +298,18 @@ impl Continuation {
         self
     }
 
+    /// The corrector's Newton tolerance (relative to 1 + ‖x‖∞): with a
+    /// [`tolerance`](Self::tolerance) 1e-4 of it, within [1e-12, 3e-7]
+    /// (at 1e-6, tol 1e-2, the paper's spring with 24 coils took ten
+    /// iterations near the folds of its plateau and then failed at the
+    /// shortest step: tests/rod/long_springs.rs); without, the solver's.
+    pub(crate) fn corrector_tolerance(&self) -> f64 {
+        self.tolerance
+            .map_or(self.solver.newton_options().tol, |tol| {
+                (1e-4 * tol).clamp(1e-12, 3e-7)
+            })
+    }
+
     /// With a [`tolerance`](Self::tolerance): whether the mesh follows it
     /// (default) or stays the start solution's, the error still being
     /// measured and reported in [`Run::estimate`](super::Run::estimate).

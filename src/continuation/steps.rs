@@ -98,6 +98,25 @@ impl Continuation {
     ) -> Result<Steps<'a, P>> {
         Steps::new(self, problem, start, None)
     }
+
+    /// [`Continuation::steps`] from `start`, a point of an earlier run at
+    /// `arclength` along it: the same iterator with every arclength counted
+    /// from there, so that the two runs read as one branch (a pull going on
+    /// at a looser tolerance, [`crate::rod::Pull::relax_to`]). The
+    /// direction is the sign of the step, as for a fresh start.
+    pub(crate) fn steps_resumed<'a, P: Problem + ?Sized>(
+        &'a self,
+        problem: &'a P,
+        start: &Solution,
+        arclength: f64,
+    ) -> Result<Steps<'a, P>> {
+        let mut steps = Steps::new(self, problem, start, None)?;
+        steps.arclength = arclength;
+        for p in &mut steps.pending {
+            p.arclength += arclength;
+        }
+        Ok(steps)
+    }
 }
 
 impl<P: Problem + ?Sized> fmt::Debug for Steps<'_, P> {
@@ -175,16 +194,8 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             cont,
             sys,
             mesh,
-            // With a tolerance, the corrector converges to 1e-4 of it and to
-            // at most 3e-7: at 1e-6 (tol 1e-2) the paper's spring with 24
-            // coils took ten iterations near the folds of its plateau and
-            // then failed at the shortest step (tests/rod/long_springs.rs)
             opts: NewtonOptions {
-                tol: cont
-                    .tolerance
-                    .map_or(cont.solver.newton_options().tol, |tol| {
-                        (1e-4 * tol).clamp(1e-12, 3e-7)
-                    }),
+                tol: cont.corrector_tolerance(),
                 max_iter: cont.max_newton,
                 stall: 1.0,
             },

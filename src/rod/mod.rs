@@ -10,6 +10,7 @@
 //! | [`Equilibrium`] | one solution with its outputs on demand (force, extension, frame, strains, energy, planarity, loop count, \|q\| drift) |
 //! | [`Pull`] | the driver: pseudo-arclength from rest to a [`crate::Target`] (force or extension), folds located; [`Start`] to drive it step by step |
 //! | [`PullRun`] | the curve in order, the located [`crate::Fold`]s, a loop count per point, the continuation's [`crate::continuation::Termination`] |
+//! | [`Relaxation`] | where a pull allowed to ([`Pull::relax_to`]) went on at a looser tolerance past loops sliding along the rod, and why |
 //!
 //! ```no_run
 //! use hockle::rod::{Pull, Rod};
@@ -141,7 +142,7 @@ pub use contact::Contact;
 pub use equilibrium::Equilibrium;
 pub use nikolai::NikolaiRod;
 pub use phase_diagram::{CuspAt, CuspLine, Fixed, LineEnd, PhaseDiagram, Unfinished};
-pub use pull::{Pull, PullRun, Start};
+pub use pull::{Pull, PullRun, Relaxation, Start};
 pub use stability::{STABILITY_SEGMENTS, SecondVariation};
 
 /// A helical spring of n coils as a 3D anisotropic Kirchhoff rod with

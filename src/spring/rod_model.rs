@@ -22,6 +22,7 @@ pub struct RodModel {
     tolerance: Option<f64>,
     intervals: Option<usize>,
     points: Option<usize>,
+    relax_to: Option<f64>,
 }
 
 impl RodModel {
@@ -44,6 +45,16 @@ impl RodModel {
     #[must_use]
     pub fn points(mut self, points: usize) -> Self {
         self.points = Some(points);
+        self
+    }
+
+    /// Where the pull's corrector fails (loops sliding along the rod), go on
+    /// from the last point at looser tolerances up to `loosest`
+    /// ([`Pull::relax_to`]); the [`Response`]'s estimated error covers the
+    /// looser part.
+    #[must_use]
+    pub fn relax_to(mut self, loosest: f64) -> Self {
+        self.relax_to = Some(loosest);
         self
     }
 
@@ -76,6 +87,9 @@ impl RodModel {
         }
         if let Some(m) = self.points {
             pull = pull.points(m);
+        }
+        if let Some(loosest) = self.relax_to {
+            pull = pull.relax_to(loosest);
         }
         pull.check()?;
         Ok(pull)

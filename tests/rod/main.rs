@@ -12,6 +12,7 @@ mod long_springs;
 mod phase_diagram;
 mod planar;
 mod planar_guess;
+mod relax;
 mod slides;
 mod stability;
 mod tolerance;

@@ -32,27 +32,29 @@
 //! halved mesh, remeshed by equidistribution), the steps (the quintic
 //! Hermite interpolation error, the cubic's at 1e-3 and looser, the tangent's angle, at most 0.4 rad, and its turn
 //! in the plane, the corrector's drift), the Newton and the location
-//! tolerances. What the run achieved is [`PullRun::estimate`]. Branch-point
+//! tolerances. What the run achieved is [`PullRun::estimate`]; where loops
+//! sliding along the rod stall the corrector, [`Pull::relax_to`] lets the
+//! run go on from its last point at looser tolerances. Branch-point
 //! detection is off (the rod's phase condition keeps the pull free of
 //! them, as the `rod` tests check with it on), which lets the corrector
 //! keep its factorisation. The target is a stop of the continuation: the
 //! last point is located on it.
 
+mod drive;
 mod recorder;
+mod relax;
 mod run;
 mod start;
 
+pub use relax::Relaxation;
 pub use run::PullRun;
 pub use start::Start;
 
-use recorder::Recorder;
 use start::relaxed_rest;
-
-use std::time::Instant;
 
 use super::Rod;
 use crate::bvp::{Collocation, Mesh, Solution};
-use crate::continuation::{Continuation, Observer, Output, drive_into};
+use crate::continuation::{Continuation, Output};
 use crate::error::{Error, Result};
 use crate::load::{Control, Target};
 
@@ -83,6 +85,8 @@ pub struct Pull {
     max_angle: f64,
     locate_folds: bool,
     pin_slides: bool,
+    /// The loosest tolerance the pull may go on at ([`Pull::relax_to`]).
+    relax_to: Option<f64>,
 }
 
 /// Largest load, in the controlled quantity, of the second equilibrium that
@@ -140,6 +144,7 @@ impl Pull {
     /// | [`max_angle`](Self::max_angle) | 0.4 rad between successive tangents |
     /// | [`locate_folds`](Self::locate_folds) | yes |
     /// | [`pin_slides`](Self::pin_slides) | no (experimental) |
+    /// | [`relax_to`](Self::relax_to) | none: the run ends where its corrector fails |
     ///
     /// Setters do not fail; [`Pull::check`] (called by [`Pull::run`] and
     /// [`Pull::start`] before any work) validates every setting and the
@@ -159,6 +164,7 @@ impl Pull {
             max_angle: 0.4,
             locate_folds: true,
             pin_slides: false,
+            relax_to: None,
         }
     }
 
@@ -253,6 +259,56 @@ impl Pull {
     #[must_use]
     pub fn pin_slides(mut self, on: bool) -> Self {
         self.pin_slides = on;
+        self
+    }
+
+    /// Where the corrector fails at the shortest step (Newton stalled or
+    /// drifted: [`Error::NewtonNotConverged`], [`Error::NewtonDiverged`],
+    /// [`Error::CorrectorDrifted`]), go on from the last point at ten times
+    /// the tolerance, and again, up to `loosest`. The last point is solved
+    /// again at its parameters on the looser pull's first mesh (where that
+    /// does not converge, on meshes equidistributed on its shape, or on its
+    /// own) and the run goes on from there with the looser pull's degree,
+    /// steps and Newton tolerance; each resumption is a [`Relaxation`] of
+    /// the run ([`PullRun::relaxations`]). Every point up to the first is
+    /// the run's at the tolerance asked for, bit for bit, and a run that
+    /// does not fail is the same run; the estimate is the largest of the
+    /// segments', so [`PullRun::meets_tolerance`] says whether the looser
+    /// part met the tolerance asked. The step limit counts every segment's
+    /// steps.
+    ///
+    /// What it is for: loops left in the rod that slide along it (at high
+    /// tension for ν < 0, at A/B = 100 past most pop-outs), where Newton's
+    /// corrections stall at 1e-9–1e-8 relative, above the corrector's
+    /// tolerance at the default 1e-6 (1e-10), and below it at 1e-5 and 1e-4
+    /// (docs/ACCURACY.md, "Going on from the failure"). It is no cure for
+    /// sliding loops: where they slide freely over a long stretch the
+    /// looser segments fail too, and a looser corrector can follow the
+    /// slide itself, along a branch whose plot retraces the curve (n = 7 at
+    /// (89°, 100, 0.05) stretched went on to eleven force maxima and ended
+    /// at F/((2πn)²B) = 83 with two loops held, where a stretch from rest
+    /// at 1e-5 passes the six pop-outs and ends at 1.15). The
+    /// [`Relaxation`]s say where the curve is the looser runs'; a run from
+    /// rest at the looser tolerance is the other way to try.
+    ///
+    /// `loosest` must lie in [tolerance, 1e-1] ([`Pull::check`]).
+    ///
+    /// ```no_run
+    /// use hockle::rod::{Pull, Rod};
+    /// use hockle::{Stiffness, Target};
+    /// // n = 6 at A/B = 100 stretched: the default ends after four pop-outs
+    /// // (its loops slide); going on at 1e-5 it passes the fifth.
+    /// let rod = Rod::new(6, 89.5_f64.to_radians(), Stiffness::nikolai(100.0, 0.05)?)?;
+    /// let run = Pull::new(rod, Target::Extension(0.99)).relax_to(1e-4).run(())?;
+    /// assert!(run.reached_target());
+    /// for r in run.relaxations() {
+    ///     println!("from point {} at {:.0e}: {}", r.from_point, r.tolerance, r.because);
+    /// }
+    /// # Ok::<(), hockle::Error>(())
+    /// ```
+    #[must_use]
+    pub fn relax_to(mut self, loosest: f64) -> Self {
+        self.relax_to = Some(loosest);
         self
     }
 
@@ -392,6 +448,15 @@ impl Pull {
                 allowed: "1e-12 ≤ tol ≤ 1e-1 (in Δz and F/((2πn)²B))",
             });
         }
+        if let Some(loosest) = self.relax_to
+            && !(self.tolerance..=1e-1).contains(&loosest)
+        {
+            return Err(Error::InvalidArgument {
+                name: "relax_to",
+                value: loosest,
+                allowed: "a tolerance between the pull's own and 1e-1",
+            });
+        }
         let solver = Collocation::new()
             .points(self.points_per_interval())
             .mesh(Mesh::uniform(self.mesh_intervals())?)
@@ -497,47 +562,6 @@ impl Pull {
             target: self.target,
             continuation: cont.step(sign * ds),
             rest,
-        })
-    }
-
-    /// Runs the pull to its target, calling `observer`'s hooks as
-    /// [`Continuation::run`] does (the same driver): `start` at the rest
-    /// state, `point` at every point (located folds are points of kind
-    /// [`PointKind::Fold`](crate::continuation::PointKind::Fold)), `fold` at each located fold, `step_rejected`,
-    /// `finish` with the termination. The pull keeps the curve, not the
-    /// solutions.
-    ///
-    /// A run that cannot go on (Newton failure at the smallest step, the
-    /// step limit, the observer) keeps its points and says why in
-    /// [`PullRun::termination`]; a point with |Δz| > 1 + tolerance (no
-    /// rod: a fixed mesh too coarse for the shape) ends it with
-    /// `Failed` and [`Error::NotARod`], the point not kept.
-    ///
-    /// # Errors
-    /// As [`Pull::start`]: bad settings, an unreachable target, or a rest
-    /// state that cannot be solved; nothing is computed past the error.
-    pub fn run<O: Observer>(&self, mut observer: O) -> Result<PullRun> {
-        let clock = Instant::now();
-        let start = self.start()?;
-        let mut trace = start.steps()?;
-        let mut recorder = Recorder::new(&start, self.locate_folds, self.tolerance);
-        let termination = drive_into(&mut trace, &mut observer, |p| recorder.record(&p));
-        let estimate = trace.estimate();
-        Ok(PullRun {
-            rod: start.rod,
-            target: start.target,
-            curve: recorder.curve,
-            folds: recorder.folds,
-            loops: recorder.loops,
-            termination,
-            steps: trace.accepted(),
-            rejected: trace.rejected(),
-            newton_iterations: trace.newton_iterations()
-                + u64::from(start.rest.newton().iterations),
-            elapsed: clock.elapsed(),
-            tolerance: self.tolerance,
-            estimate,
-            points_per_interval: self.points_per_interval(),
         })
     }
 }

@@ -1,5 +1,6 @@
 //! Continuation points turned into the rod's curve, folds and loop counts.
 
+use crate::bvp::Solution;
 use crate::continuation::{Point, PointKind};
 use crate::curve::{Curvature, Fold, FoldKind, ForceExtension, ForcePoint, Slope};
 use crate::error::{Error, Result};
@@ -19,12 +20,29 @@ pub(super) struct Recorder {
     last_dl: f64,
     /// The pull's tolerance: the slack of |Δz| ≤ 1 (robust10b).
     tolerance: f64,
+    /// Whether to keep the last curve point's solution
+    /// ([`Pull::relax_to`](super::Pull::relax_to)).
+    keep_last: bool,
+    /// The last curve point, where a looser run can go on from.
+    pub(super) last: Option<LastPoint>,
+}
+
+/// The last point of the curve as a looser run needs it.
+pub(super) struct LastPoint {
+    pub(super) solution: Solution,
+    pub(super) arclength: f64,
+    /// dλ/ds there: the direction to go on in.
+    pub(super) dparameter: f64,
+    /// The arclength from the point before it: the step to go on with.
+    pub(super) step: f64,
 }
 
 impl Recorder {
-    pub(super) fn new(start: &Start, locate_folds: bool, tolerance: f64) -> Self {
+    pub(super) fn new(start: &Start, locate_folds: bool, tolerance: f64, keep_last: bool) -> Self {
         Self {
             tolerance,
+            keep_last,
+            last: None,
             rod: start.rod,
             curve: ForceExtension::new("rod", "arclength", start.rod.scale()),
             folds: Vec::new(),
@@ -35,6 +53,10 @@ impl Recorder {
     }
 
     pub(super) fn record(&mut self, p: &Point) -> Result<()> {
+        // (the start of a run going on from the last point is that point)
+        if p.kind() == PointKind::Start && !self.curve.is_empty() {
+            return Ok(());
+        }
         let eq = Equilibrium::new(self.rod, p.solution().clone())?;
         // (robust10b) |Δz| > 1 beyond the tolerance is no rod: the run ends
         // `Failed` with `NotARod` instead of keeping the point
@@ -89,6 +111,18 @@ impl Recorder {
             }
             self.loops.push(eq.loops());
             self.last_dl = dl;
+            if self.keep_last {
+                let step = self
+                    .last
+                    .as_ref()
+                    .map_or(0.0, |l| p.arclength() - l.arclength);
+                self.last = Some(LastPoint {
+                    solution: p.solution().clone(),
+                    arclength: p.arclength(),
+                    dparameter: p.dparameter_ds(),
+                    step,
+                });
+            }
         }
         Ok(())
     }

@@ -7,6 +7,7 @@ use crate::curve::{Fold, ForceExtension};
 use crate::load::Target;
 
 use super::super::Rod;
+use super::Relaxation;
 
 /// The result of a pull: the curve in continuation order, its located folds,
 /// the loop count at every point, and why it ended. A run that stops early
@@ -24,6 +25,7 @@ pub struct PullRun {
     pub(super) newton_iterations: u64,
     pub(super) elapsed: Duration,
     pub(super) tolerance: f64,
+    pub(super) relaxations: Vec<Relaxation>,
     pub(super) estimate: ErrorEstimate,
     pub(super) points_per_interval: usize,
 }
@@ -33,6 +35,14 @@ impl PullRun {
     #[must_use]
     pub fn tolerance(&self) -> f64 {
         self.tolerance
+    }
+
+    /// Where the run went on at a looser tolerance, in order (empty unless
+    /// [`Pull::relax_to`](super::Pull::relax_to) allowed it and the
+    /// corrector failed at the tolerance asked).
+    #[must_use]
+    pub fn relaxations(&self) -> &[Relaxation] {
+        &self.relaxations
     }
 
     /// The errors the run measured, in the plane (Δz, F/((2πn)²B)) of the
@@ -150,6 +160,13 @@ impl core::fmt::Display for PullRun {
             self.estimate,
             self.points_per_interval
         )?;
+        for r in &self.relaxations {
+            writeln!(
+                f,
+                "  went on at tolerance {:.0e} from point {}: {}",
+                r.tolerance, r.from_point, r.because
+            )?;
+        }
         if !self.meets_tolerance() {
             writeln!(
                 f,
