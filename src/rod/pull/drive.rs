@@ -24,7 +24,10 @@ impl Pull {
     /// step limit, the observer) keeps its points and says why in
     /// [`PullRun::termination`]; a point with |Δz| > 1 + tolerance (no
     /// rod: a fixed mesh too coarse for the shape) ends it with
-    /// `Failed` and [`Error::NotARod`], the point not kept.
+    /// `Failed` and [`Error::NotARod`], the point not kept. Where
+    /// [`Pull::relax_to`] allows it, a run whose corrector fails goes on
+    /// from its last point at looser tolerances; the observer sees one run
+    /// all the same (one `start`, one `finish`, the arclength going on).
     ///
     /// # Errors
     /// As [`Pull::start`]: bad settings, an unreachable target, or a rest
@@ -61,10 +64,16 @@ impl Pull {
             let remaining = self.max_steps.saturating_sub(steps);
             let looser_pull = self.clone().tolerance(next).max_steps(remaining.max(1));
             let ds = last.step.clamp(self.ds_min, self.largest_step());
+            // (the looser pull's settings are this one's, checked, with a
+            // tolerance relax_to has checked: no error is expected here,
+            // and none is allowed to lose the points so far)
+            let Ok(solver) = looser_pull.check() else {
+                break;
+            };
             let cont = start
                 .continuation
                 .clone()
-                .solver(looser_pull.check()?)
+                .solver(solver)
                 .tolerance(next)
                 .max_steps(remaining.max(1))
                 .step(if last.dparameter < 0.0 { -ds } else { ds });
