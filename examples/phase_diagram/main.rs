@@ -35,17 +35,20 @@
 //! `--pull F` pulls each `--scene` too (the adaptive default rod, from rest
 //! to F/((2πn)²B) = F) and prints, after its line, one line
 //! `pulled pop_outs=<count> to=<F> reached=<bool> max_forces=<f1;f2;…>
-//! steps=<accepted> rejected=<count> tolerance=<tol> estimate=<error>` with
-//! each pop-out's maximum force, the continuation's steps and the curve's
-//! estimated error: a cross-check of the diagram, which
+//! steps=<accepted> rejected=<count> tolerance=<tol> relaxed_to=<tol>
+//! estimate=<error>` with each pop-out's maximum force, the continuation's
+//! steps, the loosest tolerance it went on at (its own where it did not)
+//! and the curve's estimated error: a cross-check of the diagram, which
 //! counts the pop-outs that exist at any force (docs/ACCURACY.md: at
 //! negative ν the maximum-force folds rise far above the reference's).
 //! `--stretch DZ` stretches each `--scene` from rest under extension
 //! control to Δz = DZ instead (at most 2000 steps) and prints
 //! `stretched pop_outs=<count> to=<DZ> reached=<bool> past_pop_outs=<bool>
 //! end_force=<F> max_forces=<…> steps=<accepted> rejected=<count>
-//! tolerance=<tol> estimate=<error>` (a stretch that stops short is run
-//! again at 1e-5, then 1e-4, and the first that reaches Δz kept): along
+//! tolerance=<tol> relaxed_to=<tol> estimate=<error>` (a stretch that stops
+//! short is run again at 1e-5, then 1e-4, and the first that reaches Δz
+//! kept; where none does, last, the default goes on from its failure up to
+//! 1e-4, `Pull::relax_to`): along
 //! the same path, a stretch passes the pop-outs' maximum forces however
 //! high; at Δz = 0.99 a rod past its
 //! pop-outs pulls with F/((2πn)²B) of 1.0–2.6 (n = 8 to 2), one that still holds a loop

@@ -319,7 +319,7 @@ pub(crate) fn pull_scene(
 
 /// One line `<word> pop_outs=<count> to=<to> reached=<bool><extra>
 /// max_forces=<f1;f2;…> steps=<accepted> rejected=<count> tolerance=<tol>
-/// estimate=<curve error>` for a pull or a stretch of a scene, and on
+/// relaxed_to=<tol> estimate=<curve error>` for a pull or a stretch of a scene, and on
 /// standard error why it stopped short.
 fn print_run(word: &str, to: f64, ran: &Ran, extra: &str) {
     let response = &ran.response;
@@ -356,7 +356,7 @@ pub(crate) struct Stretched {
 /// `stretch theta0=<deg> a_over_b=<x> nu=<x> diagram=<count>
 /// stretched=<count> reached=<bool> past_pop_outs=<bool> end_force=<F>
 /// max_forces=<F;…> steps=<accepted> rejected=<count> tolerance=<tol>
-/// estimate=<curve error>` (of the stretch kept, [`stretched`]); a stretch
+/// relaxed_to=<tol> estimate=<curve error>` (of the stretch kept, [`stretched`]); a stretch
 /// that sees more pop-outs than the diagram counts is added to
 /// `contradicted`.
 pub(crate) fn stretched_past(
