@@ -149,4 +149,17 @@ fn relax_to_outside_the_pulls_tolerance_and_1e_1_is_refused() {
     }
     assert!(pull().relax_to(1e-5).check().is_ok());
     assert!(pull().relax_to(1e-1).check().is_ok());
+    // the scene's rod model hands it to its pull
+    let spring =
+        hockle::spring::Spring::from_degrees(6, 89.5, Stiffness::nikolai(100.0, 0.05).unwrap())
+            .unwrap();
+    assert!(matches!(
+        RodModel::default()
+            .relax_to(0.5)
+            .driver(&spring, Target::Extension(0.99)),
+        Err(Error::InvalidArgument {
+            name: "relax_to",
+            ..
+        })
+    ));
 }

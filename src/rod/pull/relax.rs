@@ -8,8 +8,9 @@
 //! (1e-10, a ten-thousandth of the tolerance): the run ends at its shortest
 //! step with [`Error::CorrectorDrifted`] or a Newton failure. A run ten or a
 //! hundred times looser has its corrector's tolerance above that floor and
-//! passes (docs/ACCURACY.md, "Stretched"). Resumed from the last point, the
-//! curve up to it keeps the tolerance asked for.
+//! passes (docs/ACCURACY.md, "Stretched" and "Going on from the failure").
+//! Resumed from the last point, the curve up to it keeps the tolerance
+//! asked for.
 
 use std::ops::ControlFlow;
 
