@@ -73,12 +73,12 @@ impl Pull {
             let cont = start
                 .continuation
                 .clone()
-                .solver(solver)
+                .solver(solver.clone())
                 .tolerance(next)
                 .max_steps(remaining.max(1))
                 .step(if last.dparameter < 0.0 { -ds } else { ds });
             let resumed = (remaining > 0)
-                .then(|| looser_pull.resumed(&cont, &start.rod, &last))
+                .then(|| looser_pull.resumed(&cont, solver, &start.rod, &last))
                 .flatten();
             let Some(mut trace) = resumed else {
                 // (not from here at this tolerance: a looser one may)

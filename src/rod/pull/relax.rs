@@ -17,7 +17,7 @@ use std::ops::ControlFlow;
 use super::Pull;
 use super::recorder::LastPoint;
 use crate::bvp::adapt::{density, equidistribute};
-use crate::bvp::{Mesh, Solution};
+use crate::bvp::{Collocation, Mesh, Solution};
 use crate::continuation::{Continuation, Observer, Point, Steps, Termination};
 use crate::error::Error;
 use crate::rod::Rod;
@@ -73,20 +73,19 @@ pub(super) fn corrector_failure(termination: &Termination) -> Option<&Error> {
 }
 
 impl Pull {
-    /// The continuation `cont` (this pull's, at its looser tolerance) from
-    /// `last`, the last point of the tighter run, solved again at its
-    /// parameters on the first of these meshes where that solve converges
-    /// and the run can start ([`resume_meshes`]); `None` where none does.
+    /// The continuation `cont` (this pull's, at its looser tolerance, with
+    /// its `solver`) from `last`, the last point of the tighter run, solved
+    /// again at its parameters on the first of these meshes where that
+    /// solve converges and the run can start ([`resume_meshes`]); `None`
+    /// where none does.
     pub(super) fn resumed<'a>(
         &self,
         cont: &'a Continuation,
+        solver: Collocation,
         rod: &'a Rod,
         last: &LastPoint,
     ) -> Option<Steps<'a, Rod>> {
-        let solver = self
-            .check()
-            .ok()?
-            .newton_tolerance(cont.corrector_tolerance());
+        let solver = solver.newton_tolerance(cont.corrector_tolerance());
         resume_meshes(self.mesh_intervals(), &last.solution)
             .into_iter()
             .find_map(|mesh| {
