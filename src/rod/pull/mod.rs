@@ -131,6 +131,11 @@ impl Pull {
     /// F/((2πn)²B)): the paper's folds to 1e-6.
     pub const DEFAULT_TOLERANCE: f64 = 1e-6;
 
+    /// The loosest tolerance a pull runs at, its own or going on
+    /// ([`Pull::tolerance`], [`Pull::relax_to`]): 1e-1 in (Δz,
+    /// F/((2πn)²B)), a tenth of the plot's unit.
+    pub const LOOSEST_TOLERANCE: f64 = 1e-1;
+
     /// A pull of `rod` to `target` (force control for [`Target::Force`],
     /// extension control for [`Target::Extension`]) with the defaults:
     ///
@@ -441,7 +446,7 @@ impl Pull {
                 allowed: "at least 1 step",
             });
         }
-        if !(1e-12..=1e-1).contains(&self.tolerance) {
+        if !(1e-12..=Self::LOOSEST_TOLERANCE).contains(&self.tolerance) {
             return Err(Error::InvalidArgument {
                 name: "tolerance",
                 value: self.tolerance,
@@ -449,7 +454,7 @@ impl Pull {
             });
         }
         if let Some(loosest) = self.relax_to
-            && !(self.tolerance..=1e-1).contains(&loosest)
+            && !(self.tolerance..=Self::LOOSEST_TOLERANCE).contains(&loosest)
         {
             return Err(Error::InvalidArgument {
                 name: "relax_to",
