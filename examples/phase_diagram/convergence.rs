@@ -13,7 +13,9 @@ use super::compute::{A_OVER_B, INTERVALS, NU, THETA0_DEG, trace};
 /// reached from both sides), on 16, 24, 48 and 96 intervals; (2) the cusp
 /// in A/B at θ0 = 89.8° found by a fold curve in A/B (a second path),
 /// against the cusp curve from (1) stopped at that A/B, whose θ0 must be
-/// 89.8°.
+/// 89.8°; (3) the cusps of (1) found on 16 intervals with a tolerance of
+/// [`CHECKED_TO`] rad (`CuspSearch::tolerance`: checked on halved meshes),
+/// with the mesh they end on and how far they moved last.
 pub(crate) fn check(coils: u32) -> Result<(), Box<dyn Error + Send + Sync>> {
     let rod = Rod::new(
         coils,
@@ -58,5 +60,20 @@ pub(crate) fn check(coils: u32) -> Result<(), Box<dyn Error + Send + Sync>> {
             );
         }
     }
+    let search = CuspSearch::new().intervals(16).tolerance(CHECKED_TO);
+    for (i, [max, _]) in search.pop_outs(&family, 3.0)?.iter().enumerate() {
+        let Followed::Cusp(c) = search.follow(&family, max, Rod::THETA0, down)? else {
+            return Err(format!("N = 16 checked, pop-out {i}: no cusp").into());
+        };
+        println!(
+            "N =  16 checked to {CHECKED_TO:.0e} pop-out {i}: cusp θ0 = {:.12} rad on {} intervals, moved {:.1e} last",
+            c.parameter(),
+            c.solution().mesh().intervals(),
+            c.mesh_change().unwrap_or(f64::NAN)
+        );
+    }
     Ok(())
 }
+
+/// The accuracy (rad) the `--check` run asks of its checked cusps.
+const CHECKED_TO: f64 = 1e-9;

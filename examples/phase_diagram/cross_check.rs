@@ -161,7 +161,7 @@ fn beyond_the_pulls(
                 if let Followed::Reached(at) =
                     search.carry(&family, max, (t.to_radians(), a, nu))?.1
                 {
-                    reached = Some(checked_force(&search, &family, &at).force);
+                    reached = Some(checked_force(&search, &family, at.solution()).force);
                     break;
                 }
             }

@@ -38,7 +38,7 @@ fn leg(
     to: f64,
 ) -> Fallible<Option<Solution>> {
     Ok(match search.follow(family, at, parameter, to)? {
-        Followed::Reached(fold) => Some(*fold),
+        Followed::Reached(fold) => Some(fold.solution().clone()),
         Followed::Cusp(_) | Followed::Ended(_) => None,
     })
 }
@@ -101,7 +101,7 @@ fn map_fold(
         .min_by(|a, b| (a - theta0).abs().total_cmp(&(b - theta0).abs()))
         .expect("a grid");
     let start = match search.carry(family, fold, (column.to_radians(), a_over_b, nu))? {
-        (_, Followed::Reached(at)) => Some(*at),
+        (_, Followed::Reached(at)) => Some(at.solution().clone()),
         _ => None,
     };
     let mut map = vec![vec![None; THETA0_DEG.len()]; NU.len()];
@@ -129,7 +129,7 @@ fn map_fold(
                 && let (_, Followed::Reached(at)) =
                     search.carry(family, fold, (t.to_radians(), a_over_b, nu))?
             {
-                map[j][i] = Some(*at);
+                map[j][i] = Some(at.solution().clone());
             }
         }
     }

@@ -385,7 +385,7 @@ fn carry_to_scene(
             let (leg, followed) = search.carry(family, fold, (t.to_radians(), a, nu))?;
             match followed {
                 Followed::Reached(at) => {
-                    let checked = checked_force(&search, family, &at);
+                    let checked = checked_force(&search, family, at.solution());
                     forces.push(checked.force);
                     change = change.max(checked.change);
                 }

@@ -203,6 +203,7 @@ impl FoldContinuation {
                     arclength,
                     velocity,
                     kind,
+                    mesh_change: None,
                 };
                 let mut flow = observer.point(&fp);
                 if flow.is_continue() && kind == FoldPointKind::Cusp {
@@ -289,6 +290,7 @@ impl FoldContinuation {
             arclength: 0.0,
             velocity: None,
             kind: FoldPointKind::Start,
+            mesh_change: None,
         })
     }
 
@@ -539,6 +541,24 @@ fn correct_extended<P: Problem + ?Sized>(
         ..cont.solver.newton_options()
     };
     newton(&mut esys, xe, opts, false)
+}
+
+/// `problem`'s solution (components 0..n, parameters 0..n_p) of a solution
+/// `e` of its fold problem ([`super::FoldProblem`] with the solver's free
+/// parameters `free`), on `e`'s mesh.
+pub(crate) fn restricted<P: Problem + ?Sized>(
+    problem: &P,
+    free: &[usize],
+    e: &Solution,
+) -> Result<Solution> {
+    let mut sys = System::new(
+        problem,
+        e.mesh.points().to_vec(),
+        e.tab.clone(),
+        free.to_vec(),
+        0,
+    )?;
+    restrict(&mut sys, e)
 }
 
 /// The problem's solution (components 0..n, parameters 0..n_p) of an

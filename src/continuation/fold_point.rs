@@ -38,6 +38,7 @@ pub struct FoldPoint {
     pub(super) arclength: f64,
     pub(super) velocity: Option<(f64, f64)>,
     pub(super) kind: FoldPointKind,
+    pub(super) mesh_change: Option<f64>,
 }
 
 impl FoldPoint {
@@ -100,6 +101,39 @@ impl FoldPoint {
     #[must_use]
     pub fn kind(&self) -> FoldPointKind {
         self.kind
+    }
+
+    /// How far the located quantity moved when the point was located again
+    /// on its mesh with every interval halved, the last time it was
+    /// (`None` for a point not checked so; a search with a tolerance checks
+    /// what it returns: [`crate::rod::CuspSearch::tolerance`]). The located
+    /// quantity is λ ([`fold_parameter`](Self::fold_parameter)) for a fold,
+    /// μ ([`parameter`](Self::parameter)) for a cusp. `∞` where the point
+    /// was not found on the halved mesh.
+    #[must_use]
+    pub fn mesh_change(&self) -> Option<f64> {
+        self.mesh_change
+    }
+
+    /// The same point on a finer mesh: `solution` and `extended` there,
+    /// `change` how far the located quantity moved to get there
+    /// ([`mesh_change`](Self::mesh_change)).
+    pub(crate) fn on_finer_mesh(self, solution: Solution, extended: Solution, change: f64) -> Self {
+        Self {
+            solution,
+            extended,
+            mesh_change: Some(change),
+            ..self
+        }
+    }
+
+    /// The point as it was found, marked as not found on the halved mesh
+    /// (its [`mesh_change`](Self::mesh_change) `∞`).
+    pub(crate) fn unresolved(self) -> Self {
+        Self {
+            mesh_change: Some(f64::INFINITY),
+            ..self
+        }
     }
 }
 

@@ -104,6 +104,7 @@ mod tolerance;
 
 pub use diagram::Output;
 pub use fold_curve::FoldContinuation;
+pub(crate) use fold_curve::restricted;
 pub use fold_extended::Extended as FoldProblem;
 pub use fold_point::{FoldCurve, FoldObserver, FoldPoint, FoldPointKind};
 pub use mesh_error::ErrorEstimate;

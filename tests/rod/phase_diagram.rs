@@ -783,16 +783,32 @@ fn a_staircase_carries_a_fold_that_one_leg_at_a_time_loses() {
         "carried {f}, pulled {first}"
     );
     // Checked against its mesh, the carried fold comes to the pull's.
-    let checked = search.mesh_checked(&family, &fold, 1e-7).unwrap();
+    assert_eq!(fold.mesh_change(), None, "no tolerance: unchecked");
+    let checked = search.mesh_checked(&family, fold.solution(), 1e-7).unwrap();
     let g = checked.fold.parameters()[NikolaiRod::FORCE_SCALED];
     assert!(checked.change <= 1e-7, "{checked:?}");
+    // Carried with a tolerance, the search checks it itself: the same legs
+    // on the same mesh, the same halvings, the same fold.
+    let (_, carried) = search
+        .tolerance(1e-7)
+        .carry(&family, &pops[0][0], scene)
+        .unwrap();
+    let Followed::Reached(at) = carried else {
+        panic!("carried with a tolerance: {carried:?}");
+    };
+    assert_eq!(at.mesh_change(), Some(checked.change));
+    assert_eq!(at.fold_parameter(), g);
+    assert_eq!(
+        at.solution().mesh().intervals(),
+        checked.fold.mesh().intervals()
+    );
     assert!(
         (g - first).abs() < CHECKED_FOLD,
         "checked {g}, pulled {first}"
     );
     for bad in [0.0, -1e-6, f64::NAN, f64::INFINITY] {
         assert!(matches!(
-            search.mesh_checked(&family, &fold, bad),
+            search.mesh_checked(&family, fold.solution(), bad),
             Err(Error::InvalidArgument { .. })
         ));
     }
@@ -849,6 +865,33 @@ fn a_cusp_checked_on_halved_meshes_is_the_cusp_of_a_finer_mesh() {
         "checked {theta}, direct {}",
         direct.parameter()
     );
+    // Asked for that tolerance, the coarse search checks its cusp itself,
+    // and says how far it moved.
+    assert_eq!(coarse.mesh_change(), None, "no tolerance: unchecked");
+    let pops = coarse_search.pop_outs(&family, 3.0).unwrap();
+    let Followed::Cusp(c) = coarse_search
+        .tolerance(CUSP_CHECK)
+        .follow(&family, &pops[0][0], Rod::THETA0, 45_f64.to_radians())
+        .unwrap()
+    else {
+        panic!("pop-out 1 has a cusp in θ0 on 16 intervals, checked");
+    };
+    assert_eq!(c.mesh_change(), Some(checked.change));
+    assert_eq!(c.parameter(), theta);
+    assert_eq!(c.extended().parameters(), checked.fold.parameters());
+    assert_eq!(c.solution().mesh(), checked.fold.mesh());
+    assert_eq!(c.solution().parameters(), &checked.fold.parameters()[..5]);
+    for bad in [0.0, -1e-9, f64::NAN, f64::INFINITY] {
+        let search = coarse_search.tolerance(bad);
+        assert!(matches!(
+            search.follow(&family, &pops[0][0], Rod::THETA0, 1.5),
+            Err(Error::InvalidArgument { .. })
+        ));
+        assert!(matches!(
+            search.carry(&family, &pops[0][0], (1.5, 10.0, 0.05)),
+            Err(Error::InvalidArgument { .. })
+        ));
+    }
     assert!(matches!(
         coarse_search.cusp_mesh_checked(&family, coarse.extended(), NikolaiRod::FORCE_SCALED, 1e-9),
         Err(Error::InvalidCount { .. })

@@ -3,11 +3,13 @@
 
 use super::{CUSP_NEWTON_TOLERANCE, CuspSearch, a_spring_parameter, a_tolerance, of_the_family};
 use crate::bvp::Solution;
-use crate::continuation::{Continuation, FoldContinuation};
+use crate::continuation::{
+    Continuation, FoldContinuation, FoldPoint, FoldPointKind, FoldProblem, restricted,
+};
 use crate::error::Result;
 use crate::rod::{NikolaiRod, Rod};
 #[cfg(doc)]
-use {super::Followed, crate::continuation::FoldPoint, crate::error::Error};
+use {super::Followed, crate::error::Error};
 
 /// Newton's iterations for a fold located on a finer mesh
 /// ([`CuspSearch::mesh_checked`]): from a coarse fold whose force is
@@ -59,15 +61,12 @@ impl CuspSearch {
             "a positive finite change of F/((2πn)²B)",
         )?;
         of_the_family(fold)?;
-        let locate = FoldContinuation::new(
-            NikolaiRod::FORCE_SCALED,
-            Continuation::new(Rod::THETA0).solver(
-                self.solver(family)?
-                    .max_newton(FINER_NEWTON)
-                    .newton_tolerance((FINER_NEWTON_FRACTION * tol).clamp(1e-12, 1e-8)),
-            ),
-        );
-        halved_until(&locate, family, fold, NikolaiRod::FORCE_SCALED, tol)
+        let (at, change, halvings) = self.fold_halved(family, fold, tol)?;
+        Ok(MeshChecked {
+            fold: at.solution().clone(),
+            change,
+            halvings,
+        })
     }
 
     /// A cusp of the cascade (the [`FoldPoint::extended`] of a
@@ -104,13 +103,50 @@ impl CuspSearch {
             tol,
             "a positive finite change of the cusp's parameter",
         )?;
+        let (at, change, halvings) = self.cusp_halved(family, cusp, parameter, tol)?;
+        Ok(MeshChecked {
+            fold: at.solution().clone(),
+            change,
+            halvings,
+        })
+    }
+
+    /// [`mesh_checked`](Self::mesh_checked)'s halvings, on checked input:
+    /// the fold of `family` on the finest mesh.
+    fn fold_halved(
+        &self,
+        family: &NikolaiRod,
+        fold: &Solution,
+        tol: f64,
+    ) -> Result<(FoldPoint, f64, u32)> {
+        let locate = FoldContinuation::new(
+            NikolaiRod::FORCE_SCALED,
+            Continuation::new(Rod::THETA0).solver(
+                self.solver(family)?
+                    .max_newton(FINER_NEWTON)
+                    .newton_tolerance((FINER_NEWTON_FRACTION * tol).clamp(1e-12, 1e-8)),
+            ),
+        );
+        halved_until(&locate, family, fold, NikolaiRod::FORCE_SCALED, tol)
+    }
+
+    /// [`cusp_mesh_checked`](Self::cusp_mesh_checked)'s halvings, on
+    /// checked input: the fold in `parameter` of the fold problem on the
+    /// finest mesh (its [`FoldPoint::solution`] is the fold problem's).
+    fn cusp_halved(
+        &self,
+        family: &NikolaiRod,
+        cusp: &Solution,
+        parameter: usize,
+        tol: f64,
+    ) -> Result<(FoldPoint, f64, u32)> {
         // (the fold problem's continuation parameter, fixed here)
         let fixed = if parameter == Rod::THETA0 {
             NikolaiRod::LN_A_OVER_B
         } else {
             Rod::THETA0
         };
-        let problem = crate::continuation::FoldProblem::new(family, &[]);
+        let problem = FoldProblem::new(family, &[]);
         let locate = FoldContinuation::new(
             parameter,
             Continuation::new(fixed).solver(
@@ -122,34 +158,61 @@ impl CuspSearch {
         );
         halved_until(&locate, &problem, cusp, parameter, tol)
     }
+
+    /// `point`, a fold (of a fold curve in `parameter`) or a cusp that
+    /// [`follow`](Self::follow) found, checked against its mesh to `tol`
+    /// ([`mesh_checked`](Self::mesh_checked) on a fold's force,
+    /// [`cusp_mesh_checked`](Self::cusp_mesh_checked) on a cusp's
+    /// `parameter`): the point on the finest mesh with its
+    /// [`FoldPoint::mesh_change`], or the point as found with a change of
+    /// `∞` where the finer mesh did not find it (a Newton failure there, or
+    /// a mesh past [`crate::bvp::Mesh::MAX_INTERVALS`]).
+    pub(super) fn checked(
+        &self,
+        family: &NikolaiRod,
+        point: FoldPoint,
+        parameter: usize,
+        tol: f64,
+    ) -> FoldPoint {
+        let finer = if point.kind() == FoldPointKind::Cusp {
+            self.cusp_halved(family, point.extended(), parameter, tol)
+                .and_then(|(at, change, _)| {
+                    let extended = at.solution().clone();
+                    Ok((restricted(family, &[], &extended)?, extended, change))
+                })
+        } else {
+            self.fold_halved(family, point.solution(), tol)
+                .map(|(at, change, _)| (at.solution().clone(), at.extended().clone(), change))
+        };
+        match finer {
+            Ok((solution, extended, change)) => point.on_finer_mesh(solution, extended, change),
+            Err(_) => point.unresolved(),
+        }
+    }
 }
 
 /// `start` located again by `locate` on its mesh halved, while the
 /// parameter `watched` moves by more than `tol`, at most
-/// [`CuspSearch::MAX_HALVINGS`] times.
+/// [`CuspSearch::MAX_HALVINGS`] times: the point on the finest mesh, how far
+/// `watched` moved in the last halving, and the number of halvings.
 fn halved_until<P: crate::bvp::Problem + ?Sized>(
     locate: &FoldContinuation,
     problem: &P,
     start: &Solution,
     watched: usize,
     tol: f64,
-) -> Result<MeshChecked> {
+) -> Result<(FoldPoint, f64, u32)> {
     let value = |s: &Solution| s.parameters()[watched];
-    let (mut fold, mut change, mut halvings) = (start.clone(), f64::INFINITY, 0);
+    let (mut at, mut change, mut halvings) = (None::<FoldPoint>, f64::INFINITY, 0);
     while halvings < CuspSearch::MAX_HALVINGS && change > tol {
-        let finer = locate
-            .locate_on(problem, &fold, &fold.mesh().halved()?)?
-            .solution()
-            .clone();
-        change = (value(&finer) - value(&fold)).abs();
+        let coarse = at.as_ref().map_or(start, FoldPoint::solution);
+        let finer = locate.locate_on(problem, coarse, &coarse.mesh().halved()?)?;
+        change = (value(finer.solution()) - value(coarse)).abs();
         halvings += 1;
-        fold = finer;
+        at = Some(finer);
     }
-    Ok(MeshChecked {
-        fold,
-        change,
-        halvings,
-    })
+    let at = at.expect("MAX_HALVINGS ≥ 1 and an infinite change: one halving at least");
+    Ok((at, change, halvings))
 }
 
 /// A fold or a cusp checked against its mesh ([`CuspSearch::mesh_checked`],

@@ -14,7 +14,8 @@
 //! ```
 //!
 //! [`CuspSearch::follow`] continues a fold to a requested value of one
-//! parameter and reports the first cusp met on the way; [`CuspSearch::carry`]
+//! parameter and reports the first cusp met on the way (with a
+//! [`CuspSearch::tolerance`], checked against its mesh); [`CuspSearch::carry`]
 //! carries it to another spring (θ0, A/B, ν): the force of a pop-out there;
 //! [`CuspSearch::pop_outs`] pulls a spring and pairs its folds;
 //! [`CuspSearch::cusp_curve`] traces the curve of cusps in a third
@@ -26,12 +27,14 @@
 //! // The paper's spring: where does its first pop-out vanish as θ0 falls?
 //! let rod = Rod::new(4, 89.8_f64.to_radians(), Stiffness::nikolai(10.0, 0.05)?)?;
 //! let family = NikolaiRod::new(rod, 0.05)?;
-//! let search = CuspSearch::new().intervals(24);
+//! // found on a coarse mesh, checked on halved ones to 1e-9 rad
+//! let search = CuspSearch::new().intervals(16).tolerance(1e-9);
 //! let pops = search.pop_outs(&family, 3.0)?; // three pairs (max, min)
 //! let Followed::Cusp(cusp) = search.follow(&family, &pops[0][0], Rod::THETA0, 1.0)? else {
 //!     panic!("a cusp above θ0 = 1 rad");
 //! };
-//! assert!((cusp.parameter().to_degrees() - 87.4854).abs() < 1e-3); // docs/ACCURACY.md
+//! assert!(cusp.mesh_change().is_some_and(|moved| moved <= 1e-9)); // on 64 intervals
+//! assert!((cusp.parameter() - 1.526908532739).abs() < 2e-9); // docs/ACCURACY.md
 //! # Ok::<(), hockle::Error>(())
 //! ```
 
@@ -65,14 +68,17 @@ pub struct CuspSearch {
     curve_max_angle: f64,
     max_steps: usize,
     stairs: usize,
+    tolerance: Option<f64>,
 }
 
 /// How a fold followed in one parameter ended ([`CuspSearch::follow`]).
 #[derive(Debug, Clone)]
 pub enum Followed {
-    /// The fold reached the requested value: the solution there (of the
-    /// [`NikolaiRod`], at a fold in its force).
-    Reached(Box<Solution>),
+    /// The fold reached the requested value: the fold curve's point there
+    /// (its [`FoldPoint::solution`] a solution of the [`NikolaiRod`] at a
+    /// fold in its force, F/((2πn)²B) its
+    /// [`FoldPoint::fold_parameter`]).
+    Reached(Box<FoldPoint>),
     /// The fold met a cusp first: the two folds of its pop-out meet here
     /// and the pop-out vanishes beyond it.
     Cusp(Box<FoldPoint>),
@@ -97,6 +103,7 @@ impl CuspSearch {
     /// | [`curve_max_angle`](Self::curve_max_angle) | 0.35 rad (the continuation's): the largest angle between tangents of a cusp curve |
     /// | [`max_steps`](Self::max_steps) | 400 per fold curve |
     /// | [`stairs`](Self::stairs) | 4 rounds of [`carry`](Self::carry)'s legs |
+    /// | [`tolerance`](Self::tolerance) | none: what is found on the mesh is returned unchecked |
     ///
     /// The fold curves use the pull's solution weights (r, q: 1; F:
     /// 1/((2πn)²B)²; M: 1e-3) and weight 1 for the parameters (the force
@@ -111,7 +118,35 @@ impl CuspSearch {
             curve_max_angle: 0.35,
             max_steps: 400,
             stairs: 4,
+            tolerance: None,
         }
+    }
+
+    /// The accuracy asked of what [`follow`](Self::follow) and
+    /// [`carry`](Self::carry) return (positive and finite, checked there):
+    /// a fold's force F/((2πn)²B), a cusp's parameter (θ0 in radians,
+    /// ln A/B or ν). The fold curves run on the search's mesh
+    /// ([`intervals`](Self::intervals)); the fold or cusp they end at is
+    /// then located again with every interval halved until it moves by at
+    /// most `tol` (at most [`MAX_HALVINGS`](Self::MAX_HALVINGS) times:
+    /// [`mesh_checked`](Self::mesh_checked),
+    /// [`cusp_mesh_checked`](Self::cusp_mesh_checked)), and returned on the
+    /// finest mesh with how far it moved last
+    /// ([`FoldPoint::mesh_change`]: at most `tol`, or above it where three
+    /// halvings did not get there, `∞` where the finer mesh did not find
+    /// it). With m Gauss points a converged location moves as h^(2m), so
+    /// the change overestimates the returned point's own error by up to
+    /// 2^(2m) − 1 (255 for m = 4). A coarse mesh with a tolerance is the
+    /// cheap way to a converged cusp: pop-out 1's cusp in θ0 found on 16
+    /// intervals is 2.4e-8 rad off; checked to 1e-9 it is found on 64,
+    /// 1e-12 from the cusp found directly on 48 (docs/ACCURACY.md).
+    ///
+    /// A cusp curve ([`cusp_curve`](Self::cusp_curve)) from a checked cusp
+    /// runs on the cusp's (finer) mesh; its own points are not checked.
+    #[must_use]
+    pub fn tolerance(mut self, tol: f64) -> Self {
+        self.tolerance = Some(tol);
+        self
     }
 
     /// Uniform mesh intervals of the pull and of every fold curve.
@@ -220,10 +255,15 @@ impl CuspSearch {
     /// Continues the fold `start` (a solution of `family` at a fold in the
     /// scaled force) in `parameter` ([`Rod::THETA0`],
     /// [`NikolaiRod::LN_A_OVER_B`] or [`NikolaiRod::NU`]) towards `to`, and
-    /// stops at the first cusp or at `to`, whichever comes first.
+    /// stops at the first cusp or at `to`, whichever comes first (a
+    /// `start` already at `to` is corrected on its mesh and returned as
+    /// `Reached`). With a [`tolerance`](Self::tolerance) the cusp or fold
+    /// it ends at is checked against its mesh.
     ///
     /// # Errors
     /// [`Error::InvalidCount`] for another parameter;
+    /// [`Error::InvalidArgument`] for a [`tolerance`](Self::tolerance)
+    /// that is not positive and finite;
     /// [`Error::LengthMismatch`] if `start` is not a solution of a
     /// [`NikolaiRod`] (e.g. the [`Rod`]'s own); the errors of
     /// [`FoldContinuation::run`] at the start.
@@ -234,12 +274,22 @@ impl CuspSearch {
         parameter: usize,
         to: f64,
     ) -> Result<Followed> {
+        self.check_tolerance()?;
+        let followed = self.follow_on_mesh(family, start, parameter, to)?;
+        Ok(self.checked_end(family, followed, parameter))
+    }
+
+    /// [`follow`](Self::follow) on the search's mesh, unchecked.
+    fn follow_on_mesh(
+        &self,
+        family: &NikolaiRod,
+        start: &Solution,
+        parameter: usize,
+        to: f64,
+    ) -> Result<Followed> {
         a_spring_parameter("fold-curve parameter", parameter)?;
         of_the_family(start)?;
         let from = start.parameters()[parameter];
-        if from == to {
-            return Ok(Followed::Reached(Box::new(start.clone())));
-        }
         let w = family.rod().norm_weights();
         let settings = Continuation::new(parameter)
             .solver(self.solver(family)?)
@@ -249,9 +299,14 @@ impl CuspSearch {
             .locate_tolerance(1e-9)
             .stop_at(to)
             .max_steps(self.max_steps);
+        let fold = FoldContinuation::new(NikolaiRod::FORCE_SCALED, settings);
+        if from == to {
+            // already there: the start, corrected as a point of its fold curve
+            let here = fold.locate_on(family, start, start.mesh())?;
+            return Ok(Followed::Reached(Box::new(here)));
+        }
         let mut first = FirstCusp(None);
-        let curve = FoldContinuation::new(NikolaiRod::FORCE_SCALED, settings)
-            .run(family, start, &mut first)?;
+        let curve = fold.run(family, start, &mut first)?;
         if let Some(c) = first.0 {
             return Ok(Followed::Cusp(Box::new(c)));
         }
@@ -260,11 +315,37 @@ impl CuspSearch {
                 curve
                     .last()
                     .expect("a run that reached its stop has points")
-                    .solution()
                     .clone(),
             )),
             t => Followed::Ended(t.clone()),
         })
+    }
+
+    /// [`Error::InvalidArgument`] unless the [`tolerance`](Self::tolerance)
+    /// is unset, or positive and finite.
+    fn check_tolerance(&self) -> Result<()> {
+        self.tolerance.map_or(Ok(()), |tol| {
+            a_tolerance(
+                "tolerance",
+                tol,
+                "a positive finite accuracy of a fold's F/((2πn)²B) or a cusp's parameter",
+            )
+        })
+    }
+
+    /// With a [`tolerance`](Self::tolerance), the fold or cusp `followed`
+    /// ended at (a fold curve in `parameter`) checked against its mesh.
+    fn checked_end(&self, family: &NikolaiRod, followed: Followed, parameter: usize) -> Followed {
+        let Some(tol) = self.tolerance else {
+            return followed;
+        };
+        match followed {
+            Followed::Reached(p) => {
+                Followed::Reached(Box::new(self.checked(family, *p, parameter, tol)))
+            }
+            Followed::Cusp(p) => Followed::Cusp(Box::new(self.checked(family, *p, parameter, tol))),
+            ended => ended,
+        }
     }
 
     /// Carries the fold `start` (a solution of `family` at a fold in the
@@ -279,7 +360,11 @@ impl CuspSearch {
     /// (its two folds meet): the count at a scene is the diagram's
     /// ([`super::PhaseDiagram::pop_outs`]), since a region need not contain
     /// the whole path. Returned with the parameter of the leg that ended
-    /// it ([`NikolaiRod::NU`] when the scene was reached).
+    /// it ([`NikolaiRod::NU`] when the scene was reached). Legs that have
+    /// nothing to go are skipped, but the last (in ν) is always followed.
+    /// With a [`tolerance`](Self::tolerance) only what ends the carry (the
+    /// fold at the scene, or the cusp met) is checked against its mesh; the
+    /// legs run on the search's mesh.
     ///
     /// Why a staircase: with one round the path goes the whole way in θ0
     /// at the reference's ν before it moves ν, and a region that reaches
@@ -292,7 +377,9 @@ impl CuspSearch {
     ///
     /// # Errors
     /// [`Error::InvalidCount`] for [`stairs`](Self::stairs) outside
-    /// 1..=[`MAX_STAIRS`](Self::MAX_STAIRS); the errors of
+    /// 1..=[`MAX_STAIRS`](Self::MAX_STAIRS); [`Error::InvalidArgument`]
+    /// for a [`tolerance`](Self::tolerance) that is not positive and
+    /// finite; the errors of
     /// [`Stiffness::nikolai`] and [`Rod::new`] for a scene
     /// that is not a spring (θ0 outside (0, π/2], A/B not positive and
     /// finite, ν outside (−1, ½]); [`Error::LengthMismatch`] for a `start`
@@ -328,6 +415,7 @@ impl CuspSearch {
             ),
             (NikolaiRod::NU, p[NikolaiRod::NU], nu),
         ];
+        self.check_tolerance()?;
         let stairs = self.stairs;
         for k in 1..=stairs {
             for &(parameter, from, to) in &legs {
@@ -336,13 +424,23 @@ impl CuspSearch {
                 } else {
                     from + (to - from) * k as f64 / stairs as f64
                 };
-                match self.follow(family, &at, parameter, to)? {
-                    Followed::Reached(fold) => at = *fold,
-                    ended => return Ok((parameter, ended)),
+                if k == stairs && parameter == NikolaiRod::NU {
+                    break; // the last leg, below
+                }
+                if at.parameters()[parameter] == to {
+                    continue;
+                }
+                match self.follow_on_mesh(family, &at, parameter, to)? {
+                    Followed::Reached(fold) => at = fold.solution().clone(),
+                    ended => return Ok((parameter, self.checked_end(family, ended, parameter))),
                 }
             }
         }
-        Ok((NikolaiRod::NU, Followed::Reached(Box::new(at))))
+        let last = self.follow_on_mesh(family, &at, NikolaiRod::NU, nu)?;
+        Ok((
+            NikolaiRod::NU,
+            self.checked_end(family, last, NikolaiRod::NU),
+        ))
     }
 }
 
