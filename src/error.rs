@@ -23,6 +23,24 @@ pub(crate) fn check_points(name: &'static str, value: usize) -> Result<usize> {
     }
 }
 
+/// A real number in a message: as Rust prints it where that is short
+/// (1e-5 ≤ |v| < 1e16, zero, NaN, ∞), else in exponent form, where the
+/// plain form runs to hundreds of digits (`1e-300` rather than 300 zeros).
+/// Both forms are the shortest that read back to the same double.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Compact(pub(crate) f64);
+
+impl core::fmt::Display for Compact {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let v = self.0;
+        if v == 0.0 || !v.is_finite() || (1e-5..1e16).contains(&v.abs()) {
+            write!(f, "{v}")
+        } else {
+            write!(f, "{v:e}")
+        }
+    }
+}
+
 /// Result alias used throughout hockle.
 pub type Result<T, E = Error> = core::result::Result<T, E>;
 
@@ -32,7 +50,7 @@ pub type Result<T, E = Error> = core::result::Result<T, E>;
 pub enum Error {
     // ----- general -------------------------------------------------------
     /// A real argument is NaN, infinite, or outside its domain.
-    #[error("{name} = {value} is not allowed: {allowed}")]
+    #[error("{name} = {} is not allowed: {allowed}", Compact(*.value))]
     InvalidArgument {
         /// The argument's name as documented.
         name: &'static str,
@@ -54,7 +72,10 @@ pub enum Error {
     // ----- special -------------------------------------------------------
     /// A modulus k, parameter m or complementary parameter m1 is NaN or
     /// outside [0, 1].
-    #[error("{name} = {value} is not a valid elliptic modulus: {name} must lie in [0, 1]")]
+    #[error(
+        "{name} = {} is not a valid elliptic modulus: {name} must lie in [0, 1]",
+        Compact(*.value)
+    )]
     InvalidModulus {
         /// Which argument: `"k"`, `"m"` or `"m1"`.
         name: &'static str,
@@ -65,7 +86,9 @@ pub enum Error {
     /// The elastica needs a modulus k in [0, 1): k = 1 is the homoclinic
     /// limit, reached only asymptotically.
     #[error(
-        "modulus k = {k} (m1 = 1 - k^2 = {complement}) is not allowed: the elastica needs 0 <= k < 1"
+        "modulus k = {} (m1 = 1 - k^2 = {}) is not allowed: the elastica needs 0 <= k < 1",
+        Compact(*.k),
+        Compact(*.complement)
     )]
     ModulusNotBelowOne {
         /// The modulus given.
@@ -85,7 +108,9 @@ pub enum Error {
     /// The secondary branch j of an n-coil rod exists only from its fold
     /// k_fold on.
     #[error(
-        "secondary branch j = {j} of n = {n} coils has no solution at k = {k}: it exists only for k >= {fold} (its fold)"
+        "secondary branch j = {j} of n = {n} coils has no solution at k = {}: it exists only for k >= {} (its fold)",
+        Compact(*.k),
+        Compact(*.fold)
     )]
     BelowFold {
         /// Coils.
@@ -113,8 +138,10 @@ pub enum Error {
     /// An elastica branch traced to a force beyond what it reaches with a
     /// representable modulus.
     #[error(
-        "max_force_scaled = {requested} is beyond the branch's reach: it is followed up to \
-         m1 = 1 - k^2 = e^-690 (about 1e-300), where F/(2πn)^2 = {reachable}"
+        "max_force_scaled = {} is beyond the branch's reach: it is followed up to \
+         m1 = 1 - k^2 = e^-690 (about 1e-300), where F/(2πn)^2 = {}",
+        Compact(*.requested),
+        Compact(*.reachable)
     )]
     ForceOutOfReach {
         /// The scaled force limit asked for.
@@ -126,7 +153,8 @@ pub enum Error {
     /// double, or a positive quantity below the smallest (it would round to
     /// zero).
     #[error(
-        "the {quantity} at {name} = {value} is not representable: beyond the largest double (about 1.8e308) or, positive, below the smallest (about 4.9e-324)"
+        "the {quantity} at {name} = {} is not representable: beyond the largest double (about 1.8e308) or, positive, below the smallest (about 4.9e-324)",
+        Compact(*.value)
     )]
     Overflow {
         /// What was asked for ("force", "spring constant", …).
@@ -315,7 +343,8 @@ pub enum Error {
     #[error(
         "the target {target} cannot be reached: forces must be non-zero, with a finite \
          physical value F = f·(2πn)²B, extensions in (-1, 1) and different from the rest \
-         extension {rest_extension}"
+         extension {}",
+        Compact(*.rest_extension)
     )]
     UnreachableTarget {
         /// The target given.
@@ -363,4 +392,45 @@ pub enum Error {
         /// What the model assumes, and what to use instead.
         assumption: &'static str,
     },
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Error;
+
+    /// The value as an error message shows it.
+    fn shown(value: f64) -> String {
+        Error::InvalidArgument {
+            name: "x",
+            value,
+            allowed: "anything",
+        }
+        .to_string()
+    }
+
+    /// Extreme values print in exponent form (Rust's plain form of 1e-300
+    /// has 300 zeros), ordinary ones as Rust prints them, and both read
+    /// back to the same double.
+    #[test]
+    fn numbers_in_messages_stay_short_and_exact() {
+        for (v, text) in [
+            (1e-300, "1e-300"),
+            (-1e300, "-1e300"),
+            (5e-324, "5e-324"),
+            (f64::MAX, "1.7976931348623157e308"),
+            (0.5, "0.5"),
+            (123456.0, "123456"),
+            (1e-5, "0.00001"),
+            (9.999e-6, "9.999e-6"),
+            (0.0, "0"),
+            (f64::NAN, "NaN"),
+            (f64::NEG_INFINITY, "-inf"),
+        ] {
+            let message = shown(v);
+            assert_eq!(message, format!("x = {text} is not allowed: anything"));
+            if v.is_finite() {
+                assert_eq!(text.parse::<f64>(), Ok(v));
+            }
+        }
+    }
 }

@@ -13,7 +13,7 @@
 //! which a pull ends, in the paper's units: forces as F/((2πn)²B)
 //! ([`crate::ForceScale`]), extensions as Δz ∈ (−1, 1).
 
-use crate::error::{Error, Result};
+use crate::error::{Compact, Error, Result};
 
 /// Which end load is prescribed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
@@ -104,8 +104,8 @@ impl Target {
 impl core::fmt::Display for Target {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match self {
-            Target::Force(v) => write!(f, "F/((2πn)²B) = {v}"),
-            Target::Extension(v) => write!(f, "Δz = {v}"),
+            Target::Force(v) => write!(f, "F/((2πn)²B) = {}", Compact(*v)),
+            Target::Extension(v) => write!(f, "Δz = {}", Compact(*v)),
         }
     }
 }

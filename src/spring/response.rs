@@ -12,6 +12,7 @@ use crate::continuation::Termination;
 use crate::curve::{Fold, FoldKind, ForceExtension};
 use crate::error::{Error, Result};
 use crate::load::{Control, Target};
+use crate::rod::Relaxation;
 
 /// A model's answer to a pull: the force–extension curve in the order the
 /// model traced it, its folds, the loop count at every point, and why the
@@ -67,6 +68,7 @@ pub struct Response {
     strip_width: Option<f64>,
     termination: Termination,
     estimated_error: Option<f64>,
+    relaxations: Vec<Relaxation>,
 }
 
 impl Response {
@@ -95,6 +97,7 @@ impl Response {
             strip_width: None,
             termination,
             estimated_error: None,
+            relaxations: Vec::new(),
         }
     }
 
@@ -112,6 +115,38 @@ impl Response {
     #[must_use]
     pub fn estimated_error(&self) -> Option<f64> {
         self.estimated_error
+    }
+
+    /// The same pull with where the model went on from a failure at a
+    /// looser tolerance ([`crate::rod::Pull::relax_to`]): from each
+    /// [`Relaxation::from_point`] on, the curve's points were computed at
+    /// that relaxation's tolerance.
+    ///
+    /// # Errors
+    /// [`Error::InvalidCount`] if a relaxation's point is past the end of
+    /// the curve, or the points do not increase.
+    pub fn with_relaxations(mut self, relaxations: Vec<Relaxation>) -> Result<Self> {
+        let mut after = None;
+        for r in &relaxations {
+            if r.from_point >= self.curve.len() || after.is_some_and(|a| r.from_point <= a) {
+                return Err(Error::InvalidCount {
+                    name: "relaxation point",
+                    value: r.from_point as u64,
+                    allowed: "an index of the curve, after the previous relaxation's",
+                });
+            }
+            after = Some(r.from_point);
+        }
+        self.relaxations = relaxations;
+        Ok(self)
+    }
+
+    /// Where the model went on at a looser tolerance, in curve order (empty
+    /// where it did not: every model but a relaxed rod,
+    /// [`RodModel::relax_to`](super::RodModel::relax_to)).
+    #[must_use]
+    pub fn relaxations(&self) -> &[Relaxation] {
+        &self.relaxations
     }
 
     /// The same pull with the folds of the controlled load that the model
@@ -269,6 +304,13 @@ impl core::fmt::Display for Response {
             self.folds.len(),
             self.pop_outs().len()
         )?;
+        if let Some(last) = self.relaxations.last() {
+            write!(
+                f,
+                ", relaxed from point {} to tolerance {:.0e}",
+                self.relaxations[0].from_point, last.tolerance
+            )?;
+        }
         if self.reached_target() {
             Ok(())
         } else {
@@ -337,8 +379,30 @@ mod tests {
             Err(Error::InvalidCount { .. })
         ));
         assert!(matches!(
-            pull.with_loops(vec![Some(1); 60]),
+            pull.clone().with_loops(vec![Some(1); 60]),
             Err(Error::LengthMismatch { .. })
         ));
+        let at = |from_point| Relaxation {
+            from_point,
+            tolerance: 1e-5,
+            because: Error::NewtonDiverged {
+                iteration: 3,
+                correction: 1.0,
+            },
+        };
+        for bad in [vec![at(61)], vec![at(20), at(20)], vec![at(30), at(20)]] {
+            assert!(matches!(
+                pull.clone().with_relaxations(bad),
+                Err(Error::InvalidCount { .. })
+            ));
+        }
+        let relaxed = pull.with_relaxations(vec![at(20), at(40)]).unwrap();
+        assert_eq!(relaxed.relaxations().len(), 2);
+        assert!(
+            relaxed
+                .to_string()
+                .contains("relaxed from point 20 to tolerance 1e-5"),
+            "{relaxed}"
+        );
     }
 }

@@ -51,7 +51,7 @@ impl RodModel {
     /// Where the pull's corrector fails (loops sliding along the rod), go on
     /// from the last point at looser tolerances up to `loosest`
     /// ([`Pull::relax_to`]); the [`Response`]'s estimated error covers the
-    /// looser part.
+    /// looser part, and [`Response::relaxations`] says where it began.
     #[must_use]
     pub fn relax_to(mut self, loosest: f64) -> Self {
         self.relax_to = Some(loosest);
@@ -121,7 +121,8 @@ impl RodModel {
             run.termination().clone(),
         )
         .with_folds(run.folds().to_vec())?
-        .with_loops(run.loops().to_vec())
+        .with_loops(run.loops().to_vec())?
+        .with_relaxations(run.relaxations().to_vec())
         .map(|r| r.with_estimated_error(run.estimate().curve()))
     }
 }

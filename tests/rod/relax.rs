@@ -89,6 +89,12 @@ fn a_stretch_goes_on_past_sliding_loops_and_keeps_what_it_had() {
         PhaseDiagram::from_csv(6, include_str!("../../docs/data/phase_diagram_n6.csv")).unwrap();
     let predicted = d.pop_outs(89.5_f64.to_radians(), 100.0, 0.05).unwrap();
     let response = RodModel::response(relaxed.clone()).unwrap();
+    // the spring's answer says where the rod went on, and how loosely
+    assert_eq!(response.relaxations(), relaxed.relaxations());
+    assert!(response.to_string().contains(&format!(
+        "relaxed from point {} to tolerance",
+        first.from_point
+    )));
     let scale = response.curve().scale();
     let maxima: Vec<f64> = response
         .pop_outs()
