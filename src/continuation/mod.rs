@@ -7,7 +7,7 @@
 //! | [`Continuation`] | the settings (builder; every default listed in [`Continuation::new`], all checked before any work) |
 //! | [`Continuation::run`] → [`Run`] | every point computed, in order, with the [`Termination`] |
 //! | [`Continuation::steps`] → [`Steps`] | the same run as a step-by-step iterator (drive the loop yourself) |
-//! | [`Observer`] | hooks of a run: `start`, `point`, `fold`, `branch_point`, `step_rejected`, `finish` (closures and `()` implement it; [`Every`] thins it) |
+//! | [`Observer`] | hooks of a run: `start`, `point`, `fold`, `branch_point`, `step_rejected` (with its [`Rejection`]), `finish` (closures and `()` implement it; [`Every`] thins it) |
 //! | [`Termination`] | why a run ended: step limit, stop value or event reached, stopped by the observer, or failed with a typed [`Error`](crate::Error) |
 //! | [`Point`] | one solution on the branch, with arclength, dλ/ds, determinant sign and its [`PointKind`] |
 //! | [`BranchSide`] | which side of a branch point [`Continuation::run_from_branch_point`] starts on |
@@ -94,6 +94,7 @@ mod mesh_error;
 mod norm;
 mod observer;
 mod point;
+mod rejection;
 mod run;
 mod settings;
 mod step_control;
@@ -110,6 +111,7 @@ pub use fold_point::{FoldCurve, FoldObserver, FoldPoint, FoldPointKind};
 pub use mesh_error::ErrorEstimate;
 pub use observer::{Every, Observer};
 pub use point::{Point, PointKind};
+pub use rejection::Rejection;
 pub use run::Run;
 pub(crate) use run::drive_into;
 pub use settings::Continuation;

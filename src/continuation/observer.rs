@@ -2,7 +2,7 @@
 
 use std::ops::ControlFlow;
 
-use super::{Continuation, Point, PointKind, Termination};
+use super::{Continuation, Point, PointKind, Rejection, Termination};
 
 /// Hooks called by [`Continuation::run`] (and
 /// [`Continuation::run_from_branch_point`]), in argmin's manner: every hook
@@ -74,10 +74,11 @@ pub trait Observer {
         ControlFlow::Continue(())
     }
 
-    /// Called when a step is rejected (corrector failure or too large a
-    /// turn of the tangent) and retried with the halved step `new_ds`.
-    fn step_rejected(&mut self, new_ds: f64) -> ControlFlow<()> {
-        let _ = new_ds;
+    /// Called when a step is rejected `because` of what [`Rejection`]
+    /// says, and retried from the same point with the shorter step
+    /// `new_ds`.
+    fn step_rejected(&mut self, because: &Rejection, new_ds: f64) -> ControlFlow<()> {
+        let _ = (because, new_ds);
         ControlFlow::Continue(())
     }
 
@@ -168,8 +169,8 @@ impl<O: Observer> Observer for Every<O> {
         self.inner.branch_point(branch_point)
     }
 
-    fn step_rejected(&mut self, new_ds: f64) -> ControlFlow<()> {
-        self.inner.step_rejected(new_ds)
+    fn step_rejected(&mut self, because: &Rejection, new_ds: f64) -> ControlFlow<()> {
+        self.inner.step_rejected(because, new_ds)
     }
 
     fn finish(&mut self, termination: &Termination) {

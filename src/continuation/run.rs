@@ -150,8 +150,8 @@ pub(crate) fn drive_into<P: Problem + ?Sized, O: Observer>(
     let mut first = true;
     let mut stopped = false;
     while let Some(p) = steps.next() {
-        for ds in steps.rejections.drain(..) {
-            if observer.step_rejected(ds).is_break() {
+        for (because, ds) in steps.rejections.drain(..) {
+            if observer.step_rejected(&because, ds).is_break() {
                 stopped = true;
             }
         }
@@ -185,8 +185,8 @@ pub(crate) fn drive_into<P: Problem + ?Sized, O: Observer>(
         }
     }
     if !stopped {
-        for ds in steps.rejections.drain(..) {
-            if observer.step_rejected(ds).is_break() {
+        for (because, ds) in steps.rejections.drain(..) {
+            if observer.step_rejected(&because, ds).is_break() {
                 break;
             }
         }

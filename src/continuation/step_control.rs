@@ -1,8 +1,8 @@
 //! Step control: halving on rejection, growth by corrector iterations
 //! (module docs: AUTO-07p's rule with shifted thresholds).
 
-use super::Steps;
 use super::corrector::Corrected;
+use super::{Rejection, Steps};
 use crate::bvp::Problem;
 use crate::error::Error;
 
@@ -18,26 +18,25 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
                 Ok(c) => {
                     let cosang = self.inner(&c.tangent, &self.t0.clone());
                     let angle = cosang.clamp(-1.0, 1.0).acos();
-                    if angle <= self.cont.max_angle {
+                    let max_angle = self.cont.max_angle;
+                    if angle <= max_angle {
                         self.angle = angle;
                         return Some(c);
                     }
                     if self.ds <= self.cont.ds_min {
-                        self.fail(Error::StepAngleTooLarge {
-                            angle,
-                            max_angle: self.cont.max_angle,
-                        });
+                        self.fail(Error::StepAngleTooLarge { angle, max_angle });
                         return None;
                     }
+                    self.reject_step(Rejection::Turn { angle, max_angle });
                 }
                 Err(e) => {
                     if self.ds <= self.cont.ds_min {
                         self.fail(e);
                         return None;
                     }
+                    self.reject_step(Rejection::Corrector(e));
                 }
             }
-            self.reject_step();
         }
     }
 

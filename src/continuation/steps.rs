@@ -7,7 +7,7 @@ use super::hermite::Jet;
 use super::mesh_error::{ErrorEstimate, HalvedMesh};
 use super::norm::IntegralNorm;
 use super::tolerance::{INTERPOLATION_REJECT, StepCheck, interpolation_factor};
-use super::{BranchSide, Continuation, Point, PointKind, Termination};
+use super::{BranchSide, Continuation, Point, PointKind, Rejection, Termination};
 use crate::bvp::system::{State, System};
 use crate::bvp::{NewtonOptions, Problem, Solution, finish};
 use crate::error::{Error, Result};
@@ -31,7 +31,7 @@ pub struct Steps<'a, P: Problem + ?Sized> {
     pub(super) skip_detection: bool,
     pub(super) pending: VecDeque<Point>,
     pub(super) termination: Option<Termination>,
-    pub(super) rejections: Vec<f64>,
+    pub(super) rejections: Vec<(Rejection, f64)>,
     pub(super) rejected: usize,
     pub(super) newton_iterations: u64,
     pub(super) ycol_a: Vec<f64>,
@@ -363,13 +363,19 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
         }
     }
 
-    /// Rejects the step just corrected: halves Δs (not below Δs_min) for
-    /// the next attempt from the same x₀.
-    pub(super) fn reject_step(&mut self) {
-        self.ds = (0.5 * self.ds).max(self.cont.ds_min);
+    /// Rejects the step just corrected `because`: halves Δs (not below
+    /// Δs_min) for the next attempt from the same x₀.
+    pub(super) fn reject_step(&mut self, because: Rejection) {
+        self.reject_to((0.5 * self.ds).max(self.cont.ds_min), because);
+    }
+
+    /// Rejects the step just corrected `because`, the next attempt from the
+    /// same x₀ with Δs = `ds`.
+    pub(super) fn reject_to(&mut self, ds: f64, because: Rejection) {
+        self.ds = ds;
         self.factored_at_x0 = false;
         self.rejected += 1;
-        self.rejections.push(self.ds);
+        self.rejections.push((because, ds));
     }
 
     /// Ends the run: the step failed at |Δs| with `error`.
@@ -420,11 +426,15 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
             fit = Some(f);
         }
         let in_step = self.special_points_in_step(&c, ds);
-        if in_step.error.is_some() && self.ds > self.cont.ds_min {
+        if let Some(e) = in_step
+            .error
+            .as_ref()
+            .filter(|_| self.ds > self.cont.ds_min)
+        {
             // A special point that cannot be located in this step (its
             // Newton failing across a long step) is looked for again in a
             // shorter one; only at the shortest step does it end the run.
-            self.reject_step();
+            self.reject_step(Rejection::Location(e.clone()));
             return;
         }
         let mut coarsen = None;
@@ -435,8 +445,12 @@ impl<'a, P: Problem + ?Sized> Steps<'a, P> {
                 .map(|(cs, s, ..)| (cs.x.clone(), cs.tangent.clone(), *s))
                 .collect();
             let at_located = self.located_interpolation_error(f, ds, &inside);
-            if at_located > INTERPOLATION_REJECT * tol && self.ds > self.cont.ds_min {
-                self.reject_step();
+            let allowed = INTERPOLATION_REJECT * tol;
+            if at_located > allowed && self.ds > self.cont.ds_min {
+                self.reject_step(Rejection::AtLocated {
+                    error: at_located,
+                    allowed,
+                });
                 return;
             }
             f.error = f.error.max(at_located);

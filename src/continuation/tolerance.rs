@@ -5,8 +5,8 @@
 //! diagram's plane, the corrector's drift from the predictor, a pair of
 //! folds passed over in one step).
 
-use super::Steps;
 use super::hermite::{self, Degree, Jet, across, turns_back_twice};
+use super::{Rejection, Steps};
 use crate::bvp::Problem;
 use crate::bvp::system::State;
 use crate::error::Result;
@@ -239,15 +239,22 @@ impl<P: Problem + ?Sized> Steps<'_, P> {
             // reasons give factors below 1 (turn, drift: < 0.6; error above
             // half the tolerance: its own factor)
             let skip = if skipped { SKIPPED_SHRINK } else { 1.0 };
-            self.ds = (ds
+            let shorter = (ds
                 * interpolation_factor(error, tol)
                     .min(by_turn)
                     .min(skip)
                     .max(0.25))
             .max(self.cont.ds_min);
-            self.factored_at_x0 = false;
-            self.rejected += 1;
-            self.rejections.push(self.ds);
+            self.reject_to(
+                shorter,
+                Rejection::Interpolant {
+                    error,
+                    allowed: INTERPOLATION_REJECT * tol,
+                    turn,
+                    drift,
+                    skipped_fold_pair: skipped,
+                },
+            );
             return None;
         }
         if drift > FLOOR_DRIFT && c.at_floor {

@@ -3,7 +3,7 @@
 
 use std::ops::ControlFlow;
 
-use crate::continuation::{Continuation, Observer, Point, PointKind, Termination};
+use crate::continuation::{Continuation, Observer, Point, PointKind, Rejection, Termination};
 use crate::error::Result;
 use crate::load::Target;
 use crate::rod::{Equilibrium, Rod};
@@ -87,8 +87,8 @@ impl<O: Observer> Observer for &mut ContactObserver<O> {
         self.inner.branch_point(branch_point)
     }
 
-    fn step_rejected(&mut self, new_ds: f64) -> ControlFlow<()> {
-        self.inner.step_rejected(new_ds)
+    fn step_rejected(&mut self, because: &Rejection, new_ds: f64) -> ControlFlow<()> {
+        self.inner.step_rejected(because, new_ds)
     }
 
     fn finish(&mut self, termination: &Termination) {

@@ -403,12 +403,16 @@ fn continuation_with_a_free_parameter_and_an_integral_condition() {
     }
 }
 
-/// An observer that counts rejected steps.
-struct Count<'a>(&'a mut usize);
+/// An observer that records rejected steps: why, and the step tried next.
+struct Rejections<'a>(&'a mut Vec<(hockle::continuation::Rejection, f64)>);
 
-impl hockle::continuation::Observer for Count<'_> {
-    fn step_rejected(&mut self, _new_ds: f64) -> ControlFlow<()> {
-        *self.0 += 1;
+impl hockle::continuation::Observer for Rejections<'_> {
+    fn step_rejected(
+        &mut self,
+        because: &hockle::continuation::Rejection,
+        new_ds: f64,
+    ) -> ControlFlow<()> {
+        self.0.push((because.clone(), new_ds));
         ControlFlow::Continue(())
     }
 }
@@ -423,12 +427,12 @@ fn angle_check_rejects_steps_and_reports() {
         .intervals(10)
         .solve(&p, |_s: f64| [0.0, 0.0], &[0.0])
         .unwrap();
-    let mut rejected = 0;
+    let mut rejected = Vec::new();
     let b = Continuation::new(0)
         .step(0.1)
         .step_bounds(1e-3, 0.5)
         .max_angle(1e-9)
-        .run(&p, &start, Count(&mut rejected))
+        .run(&p, &start, Rejections(&mut rejected))
         .unwrap();
     assert!(
         matches!(
@@ -442,8 +446,50 @@ fn angle_check_rejects_steps_and_reports() {
         b.termination()
     );
     assert!(!b.points().is_empty());
-    // 0.1 → 0.05 → … → 1e-3 is seven halvings (the last clamps to ds_min).
-    assert!(rejected >= 7, "{rejected} rejections");
+    // 0.1 → 0.05 → … → 1e-3 is seven halvings (the last clamps to ds_min),
+    // each for the turn of the tangent
+    assert!(rejected.len() >= 7, "{rejected:?}");
+    for (because, ds) in &rejected {
+        let hockle::continuation::Rejection::Turn { angle, max_angle } = because else {
+            panic!("rejected for the angle, not {because}");
+        };
+        assert!(*max_angle == 1e-9 && *angle > *max_angle, "{because}");
+        assert!((1e-3..0.1).contains(ds), "{ds}");
+        assert!(because.to_string().contains("tangent turned"), "{because}");
+    }
+}
+
+/// With a tolerance, a first step far too long for the diagram's
+/// interpolant is rejected for it, and says so.
+#[test]
+fn a_step_too_long_for_the_tolerance_is_rejected_for_its_interpolant() {
+    let p = Bratu { analytic: true };
+    let solver = Collocation::new().intervals(8);
+    let start = solver.solve(&p, |_s: f64| [0.0, 0.0], &[0.0]).unwrap();
+    let mut rejected = Vec::new();
+    let run = Continuation::new(0)
+        .solver(solver)
+        .step(3.0)
+        .step_bounds(1e-6, 3.0)
+        .tolerance(1e-6)
+        .max_steps(3)
+        .run(&p, &start, Rejections(&mut rejected))
+        .unwrap();
+    assert!(!run.points().is_empty());
+    let interpolant: Vec<_> = rejected
+        .iter()
+        .filter_map(|(because, _)| match because {
+            hockle::continuation::Rejection::Interpolant { error, allowed, .. } => {
+                Some((*error, *allowed))
+            }
+            _ => None,
+        })
+        .collect();
+    assert!(!interpolant.is_empty(), "{rejected:?}");
+    for (error, allowed) in interpolant {
+        assert_eq!(allowed, 0.5e-6);
+        assert!(error > allowed, "{error:e}");
+    }
 }
 
 #[test]
@@ -462,8 +508,9 @@ fn the_iterator_counts_steps_rejections_and_iterations() {
         .step_bounds(1e-3, 0.5)
         .max_angle(0.002)
         .max_steps(40);
-    let mut rejected = 0;
-    let b = cont.run(&p, &start, Count(&mut rejected)).unwrap();
+    let mut rejections = Vec::new();
+    let b = cont.run(&p, &start, Rejections(&mut rejections)).unwrap();
+    let rejected = rejections.len();
     let mut trace = cont.steps(&p, &start).unwrap();
     let pts: Vec<_> = trace.by_ref().collect();
     assert_eq!(pts.len(), b.points().len());

@@ -18,7 +18,7 @@ use super::Pull;
 use super::recorder::LastPoint;
 use crate::bvp::adapt::{density, equidistribute};
 use crate::bvp::{Collocation, Mesh, Solution};
-use crate::continuation::{Continuation, Observer, Point, Steps, Termination};
+use crate::continuation::{Continuation, Observer, Point, Rejection, Steps, Termination};
 use crate::error::Error;
 use crate::rod::Rod;
 
@@ -156,8 +156,8 @@ impl<O: Observer> Observer for Segment<'_, O> {
         self.observer.branch_point(branch_point)
     }
 
-    fn step_rejected(&mut self, new_ds: f64) -> ControlFlow<()> {
-        self.observer.step_rejected(new_ds)
+    fn step_rejected(&mut self, because: &Rejection, new_ds: f64) -> ControlFlow<()> {
+        self.observer.step_rejected(because, new_ds)
     }
 
     fn finish(&mut self, _: &Termination) {}
