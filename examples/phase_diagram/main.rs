@@ -78,7 +78,9 @@
 //! min=<F> change=<ΔF>` (`-` where the fold is reached neither along the
 //! grid's lines nor by a carry of its own; every fold reached checked
 //! against its mesh as `--forces` does, ΔF as there), and a Markdown table
-//! per pop-out on standard error.
+//! per pop-out on standard error. `--force-map-a-over-b` does the same over
+//! (θ0, A/B) at ν = 0.05, A/B ∈ {2, 3, 5, 10, 20, 50, 100}, its lines with
+//! `a_over_b=<x>` in place of `nu=<x>`.
 //!
 //! `--cross-check` pulls a coarse grid over both planes (θ0 86–89.8°, A/B
 //! 1–100 at ν = 0.05, ν −0.2–0.3 at A/B = 10) to F/((2πn)²B) = 3 and
@@ -125,7 +127,7 @@ use hockle::rod::{Fixed, Followed, NikolaiRod, PhaseDiagram, Rod};
 /// The committed diagram of n = 4.
 const N4: &str = include_str!("../../docs/data/phase_diagram_n4.csv");
 fn usage() -> String {
-    "usage: phase_diagram [--coils N] [--out DIR] [--compute | --extend CSV | --check] [--scene THETA0_DEG,A_OVER_B,NU]… [--pull F] [--stretch DZ] [--forces] [--force-map] [--cross-check] [--fold-cusps] [--random K [--seed S]]".into()
+    "usage: phase_diagram [--coils N] [--out DIR] [--compute | --extend CSV | --check] [--scene THETA0_DEG,A_OVER_B,NU]… [--pull F] [--stretch DZ] [--forces] [--force-map | --force-map-a-over-b] [--cross-check] [--fold-cusps] [--random K [--seed S]]".into()
 }
 
 #[path = "../support/exit.rs"]
@@ -147,6 +149,7 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
     let mut stretch_to: Option<f64> = None;
     let mut carry = false;
     let mut map = false;
+    let mut map_axis = force_map::Axis::Nu;
     let mut cross = false;
     let mut cusps = false;
     let mut random: Option<usize> = None;
@@ -183,7 +186,14 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
             }
             "--check" => checks = true,
             "--forces" => carry = true,
-            "--force-map" => map = true,
+            "--force-map" => {
+                map = true;
+                map_axis = force_map::Axis::Nu;
+            }
+            "--force-map-a-over-b" => {
+                map = true;
+                map_axis = force_map::Axis::AOverB;
+            }
             "--cross-check" => cross = true,
             "--fold-cusps" => cusps = true,
             "--random" => {
@@ -231,7 +241,7 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
         let family = reference_family(coils)?;
         let search = carry_search();
         let pops = search.pop_outs(&family, 3.0)?;
-        return force_map::print(&search, &family, &pops, A_OVER_B);
+        return force_map::print(&search, &family, &pops, map_axis, (A_OVER_B, NU));
     }
     for &(t, a, nu) in &scenes {
         let check = |ok: bool, what: &str| -> Result<(), Box<dyn Error + Send + Sync>> {
@@ -434,5 +444,5 @@ mod svg;
 use checked::checked_force;
 use convergence::check;
 
-use compute::{A_OVER_B, HALF_PI, carry_search, compute, reference_family};
+use compute::{A_OVER_B, HALF_PI, NU, carry_search, compute, reference_family};
 use pulls::{contradicted_by_pulls, pull_scene, stretch_scene};
