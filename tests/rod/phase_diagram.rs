@@ -909,3 +909,73 @@ const CUSP_CHECK: f64 = 1e-9;
 /// tolerance plus the direct cusp's own error (its move from 48 to 96
 /// intervals is 1e-12 rad, its location 1e-9 in arclength): 2e-9.
 const CUSP_AGREEMENT: f64 = 2e-9;
+
+/// Settings a search cannot use are typed errors before any fold curve is
+/// run (each call below returns at once): steps, angles and tolerances
+/// that are NaN, infinite, zero or negative, on `follow`, `carry` and
+/// `cusp_curve` alike; a start that is not a cusp is refused by
+/// `cusp_curve`. A coarse 2-coil spring keeps the one pull cheap.
+#[test]
+fn a_search_with_bad_settings_says_so_before_continuing() {
+    let family = reference_family(2);
+    let search = CuspSearch::new().intervals(12);
+    let pops = search.pop_outs(&family, 3.0).unwrap();
+    let fold = &pops[0][0];
+    let scene = (89.5_f64.to_radians(), 10.0, 0.05);
+    let refused = |r: Result<(), Error>, what: &str| {
+        assert!(
+            matches!(r, Err(Error::InvalidArgument { .. })),
+            "{what}: {r:?}"
+        );
+    };
+    for bad in [f64::NAN, f64::INFINITY, 0.0, -1.0] {
+        let what = format!("{bad}");
+        refused(
+            search
+                .ds_max(bad)
+                .follow(&family, fold, Rod::THETA0, 1.5)
+                .map(drop),
+            &format!("ds_max {what}"),
+        );
+        refused(
+            search
+                .tolerance(bad)
+                .follow(&family, fold, Rod::THETA0, 1.5)
+                .map(drop),
+            &format!("tolerance {what}"),
+        );
+        refused(
+            search.tolerance(bad).carry(&family, fold, scene).map(drop),
+            &format!("carry, tolerance {what}"),
+        );
+        let curve = |s: CuspSearch| {
+            s.cusp_curve(
+                &family,
+                fold,
+                (Rod::THETA0, NikolaiRod::LN_A_OVER_B),
+                0.5,
+                -0.1,
+                (),
+            )
+            .map(drop)
+        };
+        // (a fold is no cusp: the length is checked after the settings)
+        for (name, s) in [
+            ("curve_ds_max", search.curve_ds_max(bad)),
+            ("curve_max_angle", search.curve_max_angle(bad)),
+        ] {
+            refused(curve(s), &format!("{name} {what}"));
+        }
+    }
+    assert!(matches!(
+        search.cusp_curve(
+            &family,
+            fold,
+            (Rod::THETA0, NikolaiRod::LN_A_OVER_B),
+            0.5,
+            -0.1,
+            ()
+        ),
+        Err(Error::LengthMismatch { .. })
+    ));
+}
