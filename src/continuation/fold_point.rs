@@ -146,7 +146,15 @@ impl fmt::Display for FoldPoint {
             self.fold_parameter(),
             self.parameter(),
             self.arclength
-        )
+        )?;
+        match self.mesh_change {
+            Some(change) => write!(
+                f,
+                " mesh_change={change:.1e} ({} intervals)",
+                self.solution.mesh().intervals()
+            ),
+            None => Ok(()),
+        }
     }
 }
 

@@ -877,6 +877,12 @@ fn a_cusp_checked_on_halved_meshes_is_the_cusp_of_a_finer_mesh() {
         panic!("pop-out 1 has a cusp in θ0 on 16 intervals, checked");
     };
     assert_eq!(c.mesh_change(), Some(checked.change));
+    assert!(c.to_string().contains(&format!(
+        "mesh_change={:.1e} ({} intervals)",
+        checked.change,
+        checked.fold.mesh().intervals()
+    )));
+    assert!(!coarse.to_string().contains("mesh_change"));
     assert_eq!(c.parameter(), theta);
     assert_eq!(c.extended().parameters(), checked.fold.parameters());
     assert_eq!(c.solution().mesh(), checked.fold.mesh());
