@@ -294,7 +294,11 @@ impl Pull {
     /// at F/((2πn)²B) = 83 with two loops held, where a stretch from rest
     /// at 1e-5 passes the six pop-outs and ends at 1.15). The
     /// [`Relaxation`]s say where the curve is the looser runs'; a run from
-    /// rest at the looser tolerance is the other way to try.
+    /// rest at the looser tolerance is the other way to try. Where no
+    /// looser tolerance could even resume (its re-solve of the last point
+    /// fails on every mesh: the paper's spring with 40 coils at 1e-2,
+    /// docs/ACCURACY.md "Long springs"), the run has no relaxation and ends
+    /// with the tight run's corrector failure.
     ///
     /// `loosest` must lie in [tolerance, 1e-1] ([`Pull::check`]).
     ///
