@@ -61,12 +61,7 @@ impl CuspSearch {
             "a positive finite change of F/((2πn)²B)",
         )?;
         of_the_family(fold)?;
-        let (at, change, halvings) = self.fold_halved(family, fold, tol)?;
-        Ok(MeshChecked {
-            fold: at.solution().clone(),
-            change,
-            halvings,
-        })
+        self.fold_halved(family, fold, tol).map(mesh_checked_of)
     }
 
     /// A cusp of the cascade (the [`FoldPoint::extended`] of a
@@ -103,12 +98,8 @@ impl CuspSearch {
             tol,
             "a positive finite change of the cusp's parameter",
         )?;
-        let (at, change, halvings) = self.cusp_halved(family, cusp, parameter, tol)?;
-        Ok(MeshChecked {
-            fold: at.solution().clone(),
-            change,
-            halvings,
-        })
+        self.cusp_halved(family, cusp, parameter, tol)
+            .map(mesh_checked_of)
     }
 
     /// [`mesh_checked`](Self::mesh_checked)'s halvings, on checked input:
@@ -227,4 +218,14 @@ pub struct MeshChecked {
     pub change: f64,
     /// How many times the mesh was halved.
     pub halvings: u32,
+}
+
+/// The [`MeshChecked`] of [`halved_until`]'s finest point, last change and
+/// halvings.
+fn mesh_checked_of((at, change, halvings): (FoldPoint, f64, u32)) -> MeshChecked {
+    MeshChecked {
+        fold: at.solution().clone(),
+        change,
+        halvings,
+    }
 }
