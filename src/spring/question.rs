@@ -1,7 +1,7 @@
 //! [`Question`]: what a user asks a [`Spring`](super::Spring), at a
 //! tolerance ([`Spring::answer`](super::Spring::answer)).
 
-use crate::error::{Error, Result};
+use crate::error::{Compact, Error, Result};
 use crate::load::{Control, Target};
 
 /// What a user wants to know about a spring. Forces are F/((2πn)²B) (the
@@ -241,18 +241,19 @@ impl core::fmt::Display for Question {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match self {
             Question::Curve { max_force } => {
-                write!(f, "the curve up to F/((2πn)²B) = {max_force}")
+                write!(f, "the curve up to F/((2πn)²B) = {}", Compact(*max_force))
             }
             Question::ForcesAt(x) => write!(f, "the forces at {} extensions", x.len()),
             Question::ExtensionsAt(x) => write!(f, "the extensions at {} forces", x.len()),
             Question::SpringConstant => f.write_str("the spring constant at rest"),
             Question::PopOuts { max_force } => {
-                write!(f, "the pop-outs up to F/((2πn)²B) = {max_force}")
+                write!(
+                    f,
+                    "the pop-outs up to F/((2πn)²B) = {}",
+                    Compact(*max_force)
+                )
             }
-            Question::Shape { at } => match at {
-                Target::Force(v) => write!(f, "the shape at F/((2πn)²B) = {v}"),
-                Target::Extension(v) => write!(f, "the shape at Δz = {v}"),
-            },
+            Question::Shape { at } => write!(f, "the shape at {at}"),
         }
     }
 }
