@@ -57,20 +57,36 @@ fn progress(p: &Point) -> ControlFlow<()> {
     ControlFlow::Continue(())
 }
 
+const USAGE: &str = "\
+usage: cargo run --release --example bratu -- [OUT.csv]
+  OUT.csv        where the branch is written as CSV (default target/hockle/bratu.csv)
+  --help         this text
+";
+
 #[path = "support/exit.rs"]
 mod exit;
+
+#[path = "support/cli.rs"]
+mod cli;
 
 fn main() -> std::process::ExitCode {
     exit::report("bratu", run())
 }
 
 fn run() -> Result<(), Box<dyn std::error::Error>> {
-    let out = std::env::args()
-        .nth(1)
-        .unwrap_or_else(|| "target/hockle/bratu.csv".to_string());
-    if out.starts_with('-') {
-        return Err(format!("unknown option {out}; usage: bratu [OUT.csv]").into());
+    if cli::help(USAGE) {
+        return Ok(());
     }
+    let mut out = None;
+    for a in std::env::args().skip(1) {
+        match a.as_str() {
+            other if other.starts_with('-') || out.is_some() => {
+                return Err(cli::unknown(other, USAGE).into());
+            }
+            _ => out = Some(a),
+        }
+    }
+    let out = out.unwrap_or_else(|| "target/hockle/bratu.csv".to_string());
     if let Some(dir) = std::path::Path::new(&out).parent() {
         std::fs::create_dir_all(dir)?;
     }

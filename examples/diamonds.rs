@@ -14,14 +14,28 @@ use hockle::Stiffness;
 use hockle::elastica::{Branch, Elastica, OutOfPlane};
 use hockle::special::Modulus;
 
+const USAGE: &str = "\
+usage: cargo run --release --example diamonds -- [OPTIONS]
+  --nu NU        (repeatable) every diamond below F/(2πn)² = 40 at A/B = 10 and C by the
+                 Nikolai equality at this Poisson ratio, as CSV (default: the paper's
+                 tables at ν = 0.05 and against C/B)
+  --help         this text
+";
+
 #[path = "support/exit.rs"]
 mod exit;
+
+#[path = "support/cli.rs"]
+mod cli;
 
 fn main() -> std::process::ExitCode {
     exit::report("diamonds", run())
 }
 
 fn run() -> Result<(), Box<dyn std::error::Error>> {
+    if cli::help(USAGE) {
+        return Ok(());
+    }
     let mut nus = Vec::new();
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
@@ -31,11 +45,7 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
                     .ok_or("--nu needs a Poisson ratio")?
                     .parse::<f64>()?,
             ),
-            other => {
-                return Err(
-                    format!("unknown argument {other}; allowed: --nu NU (repeatable)").into(),
-                );
-            }
+            other => return Err(cli::unknown(other, USAGE).into()),
         }
     }
     if !nus.is_empty() {

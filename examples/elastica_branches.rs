@@ -24,7 +24,14 @@ use plotters::prelude::*;
 
 const FMAX: f64 = 1.5;
 
-fn out_dir() -> PathBuf {
+const USAGE: &str = "\
+usage: cargo run --release --example elastica_branches -- [OPTIONS]
+  --out DIR      where the SVG files go (default target/hockle)
+  --help         this text
+";
+
+/// The output folder of the command line, or the argument it does not take.
+fn out_dir() -> Result<PathBuf, String> {
     let mut args = std::env::args().skip(1);
     let mut dir = std::env::var_os("CARGO_TARGET_DIR")
         .map_or_else(
@@ -33,13 +40,12 @@ fn out_dir() -> PathBuf {
         )
         .join("hockle");
     while let Some(a) = args.next() {
-        if a == "--out"
-            && let Some(d) = args.next()
-        {
-            dir = PathBuf::from(d);
+        match a.as_str() {
+            "--out" => dir = PathBuf::from(args.next().ok_or("--out needs a directory")?),
+            other => return Err(cli::unknown(other, USAGE)),
         }
     }
-    dir
+    Ok(dir)
 }
 
 fn series(c: &ForceExtension) -> Vec<(f64, f64)> {
@@ -117,12 +123,18 @@ fn palette(i: usize) -> RGBColor {
 #[path = "support/exit.rs"]
 mod exit;
 
+#[path = "support/cli.rs"]
+mod cli;
+
 fn main() -> std::process::ExitCode {
     exit::report("elastica_branches", run())
 }
 
 fn run() -> Result<(), Box<dyn Error>> {
-    let dir = out_dir();
+    if cli::help(USAGE) {
+        return Ok(());
+    }
+    let dir = out_dir()?;
     std::fs::create_dir_all(&dir)?;
     let trace = Trace::new()
         .points(400)

@@ -401,18 +401,40 @@ fn long_springs() {
     }
 }
 
-fn main() {
+const USAGE: &str = "\
+usage: cargo run --release --example extremes -- [OPTIONS]
+  --rod            the rod's table only, instead of special's and elastica's (minutes)
+  --long-springs   the long springs' table only, n = 12 … 40 coils (minutes)
+  --help           this text
+";
+
+#[path = "support/exit.rs"]
+mod exit;
+
+#[path = "support/cli.rs"]
+mod cli;
+
+fn main() -> std::process::ExitCode {
+    exit::report("extremes", run())
+}
+
+fn run() -> Result<(), Box<dyn std::error::Error>> {
+    if cli::help(USAGE) {
+        return Ok(());
+    }
+    cli::only_flags(&["--rod", "--long-springs"], USAGE)?;
     if std::env::args().any(|a| a == "--long-springs") {
         long_springs();
-        return;
+        return Ok(());
     }
     if std::env::args().any(|a| a == "--rod") {
         println!("### rod\n");
         rod();
-        return;
+        return Ok(());
     }
     println!("### special\n");
     special();
     println!("\n### elastica\n");
     elastica();
+    Ok(())
 }

@@ -88,28 +88,65 @@ fn timed(model: &dyn Model, spring: &Spring, target: f64) -> (Response, Duration
     (last.expect("at least one run"), start.elapsed() / runs)
 }
 
+const USAGE: &str = "\
+usage: cargo run --release --example models -- [OPTIONS]
+  (none)                            the table of docs/ACCURACY.md: each model against the 3D rod
+  --scene N,THETA0_DEG,A_OVER_B,NU  (repeatable) the model the spring chooses for this scene (C by the
+                                    Nikolai equality), its estimated and true error and its seconds
+  --tolerance TOL                   with --scene: the tolerance of the answer (default 1e-4)
+  --max-force F                     with --scene: the curve up to F/((2πn)²B) = F (default 1)
+  --shape-at F                      with --scene: the shape at F/((2πn)²B) = F instead of the curve
+  --trade [--out DIR]               what each model costs: tables, and models_trade.svg into DIR
+                                    (default target/hockle)
+  --on-demand                       the cost of shapes, stability and contact on top of a curve
+  --ends THETA0_DEG,A_OVER_B,NU     the rod's excess extension over the helix, times n, for n = 1 … 8
+  --shapes                          what the shape at one load costs
+  --helix-data [--random N] [--seed S] [--scene N,THETA0_DEG,A_OVER_B,NU]…
+                                    the helix's true error and its end layers' estimate, as CSV, on the
+                                    grid (or the scenes given) and on N random scenes (default 0;
+                                    seed S, default 348192750)
+  --pop-out-margin                  how far below a 2-coil rod's first fold and the helix's force
+                                    maximum a spring's first pop-out comes
+  --help                            this text
+--trade, --on-demand, --ends, --shapes, --helix-data and --pop-out-margin come first.
+";
+
 #[path = "support/exit.rs"]
 mod exit;
 
+#[path = "support/cli.rs"]
+mod cli;
+
 fn main() -> std::process::ExitCode {
+    exit::report("models", run())
+}
+
+fn run() -> Result<(), String> {
+    if cli::help(USAGE) {
+        return Ok(());
+    }
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let result = match args.first().map(String::as_str) {
+    // a mode that takes `taken` arguments after its flag: no more
+    let no_more = |taken: usize| match args.get(1 + taken) {
+        Some(a) => Err(cli::unknown(a, USAGE)),
+        None => Ok(()),
+    };
+    match args.first().map(String::as_str) {
         None => {
             table();
             Ok(())
         }
         Some("--trade") => trade::run(&args[1..]),
-        Some("--on-demand") => trade::on_demand(),
+        Some("--on-demand") => no_more(0).and_then(|()| trade::on_demand()),
         Some("--helix-data") => helix_bound::run(&args[1..]),
-        Some("--pop-out-margin") => pop_out_margin::run(),
-        Some("--shapes") => shapes::run(),
+        Some("--pop-out-margin") => no_more(0).and_then(|()| pop_out_margin::run()),
+        Some("--shapes") => no_more(0).and_then(|()| shapes::run()),
         Some("--ends") => args
             .get(1)
             .ok_or_else(|| "--ends needs THETA0_DEG,A_OVER_B,NU".to_owned())
-            .and_then(|scene| trade::ends(scene)),
+            .and_then(|scene| no_more(1).and_then(|()| trade::ends(scene))),
         Some(_) => scenes(&args),
-    };
-    exit::report("models", result)
+    }
 }
 
 /// One scene of the command line: n, θ0 (degrees), A/B, ν.
@@ -128,21 +165,22 @@ fn scenes(args: &[String]) -> Result<(), String> {
     let (mut list, mut tol, mut max_force, mut shape_at) = (Vec::new(), 1e-4, 1.0, None);
     let mut it = args.iter();
     while let Some(flag) = it.next() {
-        let value = it.next().ok_or_else(|| format!("{flag} needs a value"))?;
+        let mut value = || it.next().ok_or_else(|| format!("{flag} needs a value"));
         match flag.as_str() {
-            "--scene" => list.push(parse_scene(value)?),
-            "--tolerance" => tol = value.parse().map_err(|_| format!("--tolerance {value}"))?,
+            "--scene" => list.push(parse_scene(value()?)?),
+            "--tolerance" => {
+                let value = value()?;
+                tol = value.parse().map_err(|_| format!("--tolerance {value}"))?;
+            }
             "--max-force" => {
+                let value = value()?;
                 max_force = value.parse().map_err(|_| format!("--max-force {value}"))?;
             }
             "--shape-at" => {
+                let value = value()?;
                 shape_at = Some(value.parse().map_err(|_| format!("--shape-at {value}"))?);
             }
-            other => {
-                return Err(format!(
-                    "unknown flag {other} (--scene N,THETA0_DEG,A_OVER_B,NU, --tolerance TOL, --max-force F, --shape-at F)"
-                ));
-            }
+            other => return Err(cli::unknown(other, USAGE)),
         }
     }
     if list.is_empty() {

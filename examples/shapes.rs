@@ -50,14 +50,26 @@ impl Collect {
     }
 }
 
+const USAGE: &str = "\
+usage: cargo run --release --example shapes -- [OPTIONS]
+  --out DIR      where shapes.svg goes (default target/hockle)
+  --help         this text
+";
+
 #[path = "support/exit.rs"]
 mod exit;
+
+#[path = "support/cli.rs"]
+mod cli;
 
 fn main() -> std::process::ExitCode {
     exit::report("shapes", run())
 }
 
 fn run() -> Result<(), Box<dyn Error>> {
+    if cli::help(USAGE) {
+        return Ok(());
+    }
     let mut out = std::env::var_os("CARGO_TARGET_DIR")
         .map_or_else(
             || std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"),
@@ -68,7 +80,7 @@ fn run() -> Result<(), Box<dyn Error>> {
     while let Some(a) = args.next() {
         match a.as_str() {
             "--out" => out = PathBuf::from(args.next().ok_or("--out needs a directory")?),
-            other => return Err(format!("unknown argument {other}").into()),
+            other => return Err(cli::unknown(other, USAGE).into()),
         }
     }
     std::fs::create_dir_all(&out)?;

@@ -82,14 +82,27 @@ const SCENES: [Scene; 6] = [
     },
 ];
 
+const USAGE: &str = "\
+usage: cargo run --release --example slides -- [OPTIONS]
+  --pinned-only  the pinned runs only (default: each scene unpinned, then pinned)
+  --help         this text
+";
+
 #[path = "support/exit.rs"]
 mod exit;
+
+#[path = "support/cli.rs"]
+mod cli;
 
 fn main() -> std::process::ExitCode {
     exit::report("slides", run())
 }
 
 fn run() -> Result<(), Box<dyn Error>> {
+    if cli::help(USAGE) {
+        return Ok(());
+    }
+    cli::only_flags(&["--pinned-only"], USAGE)?;
     let pinned_only = std::env::args().any(|a| a == "--pinned-only");
     for s in &SCENES {
         let rod = Rod::new(

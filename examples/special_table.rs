@@ -28,7 +28,26 @@ fn modulus_with_k(target: f64) -> Modulus {
     Modulus::from_complement((0.5 * (lo + hi)).exp()).expect("m1 in (0, 1]")
 }
 
-fn main() {
+const USAGE: &str = "\
+usage: cargo run --release --example special_table -- [OPTIONS]
+  --help         this text
+";
+
+#[path = "support/exit.rs"]
+mod exit;
+
+#[path = "support/cli.rs"]
+mod cli;
+
+fn main() -> std::process::ExitCode {
+    exit::report("special_table", run())
+}
+
+fn run() -> Result<(), String> {
+    if cli::help(USAGE) {
+        return Ok(());
+    }
+    cli::only_flags(&[], USAGE)?;
     let n = 4.0;
     let mut rows: Vec<(String, Modulus)> = (1..4)
         .map(|j| {
@@ -70,4 +89,5 @@ fn main() {
             dev
         );
     }
+    Ok(())
 }

@@ -22,14 +22,29 @@ use hockle::continuation::{Point, PointKind};
 use hockle::rod::Equilibrium;
 use hockle::spring::{Control, RodModel, Spring, Target};
 
+const USAGE: &str = "\
+usage: cargo run --release --example stability -- [OPTIONS]
+  --every N        keep and test the equilibrium of every N-th curve point (default 25)
+  --segments N     segments of the direct test's discretisation (default 200)
+  --slinky         the slinky (A/B = 0.1) instead of the paper's spring (A/B = 10)
+  --contact-only   skip the direct test: the carried index and the contact check only
+  --help           this text
+";
+
 #[path = "support/exit.rs"]
 mod exit;
+
+#[path = "support/cli.rs"]
+mod cli;
 
 fn main() -> std::process::ExitCode {
     exit::report("stability", run())
 }
 
 fn run() -> Result<(), Box<dyn Error>> {
+    if cli::help(USAGE) {
+        return Ok(());
+    }
     let mut every = 25usize;
     let mut segments = hockle::rod::STABILITY_SEGMENTS;
     let mut spring = Spring::paper();
@@ -43,7 +58,7 @@ fn run() -> Result<(), Box<dyn Error>> {
             "--slinky" => {
                 spring = Spring::from_degrees(4, 89.8, Stiffness::nikolai(0.1, 0.05)?)?;
             }
-            other => return Err(format!("unknown argument {other}").into()),
+            other => return Err(cli::unknown(other, USAGE).into()),
         }
     }
     let model = RodModel::default();

@@ -158,14 +158,28 @@ fn plot(title: &str, curves: &[Curve], path: &Path) -> Result<(), Box<dyn Error>
     Ok(())
 }
 
+const USAGE: &str = "\
+usage: cargo run --release --features rayon --example sweeps -- [OPTIONS]
+  --out DIR      where the SVG files go (default target/hockle)
+  --serial       run the pulls one after the other (default: in parallel with the rayon
+                 feature), to measure the speed-up
+  --help         this text
+";
+
 #[path = "support/exit.rs"]
 mod exit;
+
+#[path = "support/cli.rs"]
+mod cli;
 
 fn main() -> std::process::ExitCode {
     exit::report("sweeps", run())
 }
 
 fn run() -> Result<(), Box<dyn Error>> {
+    if cli::help(USAGE) {
+        return Ok(());
+    }
     let mut out = std::env::var_os("CARGO_TARGET_DIR")
         .map_or_else(
             || std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"),
@@ -178,12 +192,7 @@ fn run() -> Result<(), Box<dyn Error>> {
         match arg.as_str() {
             "--out" => out = PathBuf::from(args.next().ok_or("--out needs a directory")?),
             "--serial" => serial = true,
-            other => {
-                return Err(format!(
-                    "unknown argument {other}; usage: sweeps [--out DIR] [--serial]"
-                )
-                .into());
-            }
+            other => return Err(cli::unknown(other, USAGE).into()),
         }
     }
     std::fs::create_dir_all(&out)?;

@@ -235,14 +235,31 @@ struct Row {
     true_curve: f64,
 }
 
+const USAGE: &str = "\
+usage: cargo run --release --example tolerance_trade -- [OPTIONS]
+  --out DIR        where tolerance_trade.csv and tolerance_pareto.svg go (default target/hockle)
+  --repeat R       time each run as the median of R repetitions (default 3)
+  --memory         one default pull and its peak resident memory instead
+  --one TOL        one pull at tolerance TOL, printed, instead
+  --folds SETTING  R pulls at SETTING (TOL, or N,M,TOL for a fixed mesh) and their folds,
+                   machine-readably, instead
+  --help           this text
+";
+
 #[path = "support/exit.rs"]
 mod exit;
+
+#[path = "support/cli.rs"]
+mod cli;
 
 fn main() -> std::process::ExitCode {
     exit::report("tolerance_trade", run())
 }
 
 fn run() -> Result<(), Box<dyn Error>> {
+    if cli::help(USAGE) {
+        return Ok(());
+    }
     let mut out = std::env::var_os("CARGO_TARGET_DIR")
         .map_or_else(
             || Path::new(env!("CARGO_MANIFEST_DIR")).join("target"),
@@ -265,7 +282,7 @@ fn run() -> Result<(), Box<dyn Error>> {
                     &args.next().ok_or("--folds needs TOL or N,M,TOL")?,
                 )?)
             }
-            other => return Err(format!("unknown argument {other}").into()),
+            other => return Err(cli::unknown(other, USAGE).into()),
         }
     }
     if repeat == 0 {

@@ -21,21 +21,34 @@ use hockle::bvp::classic::Troesch;
 #[path = "../tests/common/mod.rs"]
 mod common;
 
+const USAGE: &str = "\
+usage: cargo run --release --example troesch -- [OPTIONS]
+  --points M     collocation points per interval (default 4)
+  --repeat R     time each tolerance as the best of R solves (default 20)
+  --help         this text
+";
+
 #[path = "support/exit.rs"]
 mod exit;
+
+#[path = "support/cli.rs"]
+mod cli;
 
 fn main() -> std::process::ExitCode {
     exit::report("troesch", run())
 }
 
 fn run() -> Result<(), Box<dyn Error>> {
+    if cli::help(USAGE) {
+        return Ok(());
+    }
     let (mut points, mut repeat) = (4, 20);
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {
             "--points" => points = args.next().ok_or("--points needs M")?.parse()?,
             "--repeat" => repeat = args.next().ok_or("--repeat needs R")?.parse()?,
-            other => return Err(format!("unknown argument {other}").into()),
+            other => return Err(cli::unknown(other, USAGE).into()),
         }
     }
     if repeat == 0 {

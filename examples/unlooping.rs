@@ -3,7 +3,11 @@
 //!
 //! ```text
 //! cargo run --release --example unlooping [-- --out DIR] [--tolerance TOL] [--intervals N] [--no-contact]
+//!                                         [--spring N,THETA0_DEG,A_OVER_B,NU] [--to F] [--help]
 //! ```
+//!
+//! `--spring` pulls another spring (C by the Nikolai equality, as the
+//! paper's), `--to` to another F/((2πn)²B).
 //!
 //! Written on the `spring` scene: the 3D rod answers the spring, the
 //! elastica model gives the branches it visits. Prints the stretches that
@@ -29,12 +33,27 @@ use hockle::continuation::Point;
 use hockle::elastica::{Branch, Diamond, OutOfPlane};
 use hockle::rod::Pull;
 use hockle::spring::{Control, Direction, ElasticaModel, RodModel, Spring, Target};
-use hockle::{FoldKind, ForceExtension};
+use hockle::{FoldKind, ForceExtension, Stiffness};
 
-const MAX_FORCE_SCALED: f64 = 3.0;
+/// The paper's load, F/((2πn)²B) = 3.
+const PAPER_FORCE_SCALED: f64 = 3.0;
+
+const USAGE: &str = "\
+usage: cargo run --release --example unlooping -- [OPTIONS]
+  --spring N,THETA0_DEG,A_OVER_B,NU  the spring (default the paper's: 4,89.8,10,0.05; C by the Nikolai equality)
+  --to F                             pull to F/((2πn)²B) = F (default 3)
+  --tolerance TOL                    accuracy of the curve and its folds in (Δz, F/((2πn)²B)) (default 1e-6)
+  --intervals N                      a fixed mesh of N intervals instead of the adaptive one
+  --no-contact                       skip the self-contact check
+  --out DIR                          where unlooping.csv and unlooping.svg go (default target/hockle)
+  --help                             this text
+";
 
 #[path = "support/exit.rs"]
 mod exit;
+
+#[path = "support/cli.rs"]
+mod cli;
 
 fn main() -> std::process::ExitCode {
     exit::report("unlooping", run())
@@ -50,6 +69,11 @@ fn run() -> Result<(), Box<dyn Error>> {
     let mut model = RodModel::default();
     let mut tolerance = Pull::DEFAULT_TOLERANCE;
     let mut contact = true;
+    let mut scene = Scene::paper();
+    let mut max_force_scaled = PAPER_FORCE_SCALED;
+    if cli::help(USAGE) {
+        return Ok(());
+    }
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {
@@ -64,21 +88,35 @@ fn run() -> Result<(), Box<dyn Error>> {
                 model = model.tolerance(tolerance);
             }
             "--no-contact" => contact = false,
-            other => return Err(format!("unknown argument {other}").into()),
+            "--spring" => {
+                scene = Scene::parse(
+                    &args
+                        .next()
+                        .ok_or("--spring needs N,THETA0_DEG,A_OVER_B,NU")?,
+                )?
+            }
+            "--to" => {
+                let f = args.next().ok_or("--to needs F")?;
+                max_force_scaled = f.parse().map_err(|e| format!("--to {f}: {e}"))?;
+                if !(max_force_scaled > 0.0 && max_force_scaled.is_finite()) {
+                    return Err(format!("--to {f}: a positive finite force F/((2πn)²B)").into());
+                }
+            }
+            other => return Err(cli::unknown(other, USAGE).into()),
         }
     }
     std::fs::create_dir_all(&out).map_err(|e| format!("--out {}: {e}", out.display()))?;
 
-    let spring = Spring::paper();
+    let spring = scene.spring()?;
     let scale = spring.force_scale();
-    eprintln!("pulling the {spring} to F/((2πn)²B) = {MAX_FORCE_SCALED}");
+    eprintln!("pulling the {spring} to F/((2πn)²B) = {max_force_scaled}");
     let start = Instant::now();
     let mut count = 0usize;
     let progress = |p: &Point| {
         count += 1;
         if count.is_multiple_of(20) {
             let f = p.parameter() / scale;
-            let done = (f / MAX_FORCE_SCALED).clamp(0.0, 1.0);
+            let done = (f / max_force_scaled).clamp(0.0, 1.0);
             eprint!(
                 "\r  step {count:5}  F/((2πn)²B) = {f:.4}  [{:<30}] {:.1} s ",
                 "#".repeat((30.0 * done) as usize),
@@ -87,7 +125,7 @@ fn run() -> Result<(), Box<dyn Error>> {
         }
         ControlFlow::Continue(())
     };
-    let target = Target::Force(MAX_FORCE_SCALED);
+    let target = Target::Force(max_force_scaled);
     let response = if contact {
         model.pull_with_contact(&spring, target, progress)?
     } else {
@@ -95,12 +133,12 @@ fn run() -> Result<(), Box<dyn Error>> {
     };
     let elapsed = start.elapsed();
     eprintln!();
-    let scaffold = ElasticaModel::default().scaffold(&spring, MAX_FORCE_SCALED)?;
+    let scaffold = ElasticaModel::default().scaffold(&spring, max_force_scaled)?;
     // the diamonds on the branches of the scaffold: primary υ (j = n) and
     // the secondary υ-branches j < n
     let n = spring.coils();
     let diamonds: Vec<Diamond> = OutOfPlane::new(n, spring.stiffness())?
-        .all_diamonds(MAX_FORCE_SCALED)?
+        .all_diamonds(max_force_scaled)?
         .into_iter()
         .filter(|d| d.branch() != Branch::Alpha)
         .collect();
@@ -217,7 +255,11 @@ fn run() -> Result<(), Box<dyn Error>> {
     let csv = out.join("unlooping.csv");
     let svg = out.join("unlooping.svg");
     write_csv(&response, &csv).map_err(|e| format!("{}: {e}", csv.display()))?;
-    std::fs::write(&svg, plot(&response, &scaffold, &diamonds))
+    let figure = Figure {
+        title: scene.to_string(),
+        max_force_scaled,
+    };
+    std::fs::write(&svg, plot(&figure, &response, &scaffold, &diamonds))
         .map_err(|e| format!("{}: {e}", svg.display()))?;
     println!("wrote {} and {}", csv.display(), svg.display());
     Ok(())
@@ -262,16 +304,86 @@ const PALETTE: [&str; 4] = ["#0072B2", "#009E73", "#CC79A7", "#E69F00"];
 
 /// The figure as SVG, written directly so that every coordinate keeps three
 /// decimals of a pixel (no staircase on the steep stretches).
+/// The spring pulled: n, θ0 (degrees), A/B and ν, C by the Nikolai equality.
+struct Scene {
+    coils: u32,
+    theta0_deg: f64,
+    a_over_b: f64,
+    nu: f64,
+}
+
+impl Scene {
+    fn paper() -> Self {
+        Self {
+            coils: 4,
+            theta0_deg: 89.8,
+            a_over_b: 10.0,
+            nu: 0.05,
+        }
+    }
+
+    /// `N,THETA0_DEG,A_OVER_B,NU`; the values are checked by [`Scene::spring`].
+    fn parse(text: &str) -> Result<Self, String> {
+        let fields: Vec<&str> = text.split(',').collect();
+        let [n, theta0, a_over_b, nu] = fields[..] else {
+            return Err(format!(
+                "--spring {text}: four values N,THETA0_DEG,A_OVER_B,NU"
+            ));
+        };
+        let number = |what: &str, v: &str| -> Result<f64, String> {
+            v.trim()
+                .parse()
+                .map_err(|e| format!("--spring {text}: {what} {v}: {e}"))
+        };
+        Ok(Self {
+            coils: n
+                .trim()
+                .parse()
+                .map_err(|e| format!("--spring {text}: N {n}: {e}"))?,
+            theta0_deg: number("THETA0_DEG", theta0)?,
+            a_over_b: number("A_OVER_B", a_over_b)?,
+            nu: number("NU", nu)?,
+        })
+    }
+
+    /// The spring, or why not (the error names `--spring`).
+    fn spring(&self) -> Result<Spring, String> {
+        Stiffness::nikolai(self.a_over_b, self.nu)
+            .and_then(|s| Spring::from_degrees(self.coils, self.theta0_deg, s))
+            .map_err(|e| format!("--spring {self}: {e}"))
+    }
+}
+
+impl std::fmt::Display for Scene {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "n = {}, θ0 = {}°, A/B = {}, ν = {}",
+            self.coils, self.theta0_deg, self.a_over_b, self.nu
+        )
+    }
+}
+
+/// The figure's title and force range.
+struct Figure {
+    title: String,
+    max_force_scaled: f64,
+}
+
+/// The figure as SVG, written directly so that every coordinate keeps three
+/// decimals of a pixel (no staircase on the steep stretches).
 fn plot(
+    figure: &Figure,
     response: &hockle::spring::Response,
     scaffold: &[ForceExtension],
     diamonds: &[Diamond],
 ) -> String {
+    let max_force = figure.max_force_scaled;
     let (w, h) = (900.0, 640.0);
     let (left, right, top, bottom) = (70.0, 20.0, 50.0, 90.0);
     let (pw, ph) = (w - left - right, h - top - bottom);
     let x = |dz: f64| left + dz * pw;
-    let y = |f: f64| top + (1.0 - f / MAX_FORCE_SCALED) * ph;
+    let y = |f: f64| top + (1.0 - f / max_force) * ph;
     let mut s = String::new();
     let _ = writeln!(
         s,
@@ -280,12 +392,13 @@ fn plot(
     let _ = writeln!(s, r#"<rect width="{w}" height="{h}" fill="white"/>"#);
     let _ = writeln!(
         s,
-        r#"<text x="{}" y="28" font-size="20" text-anchor="middle">Cascade unlooping: n = 4, θ0 = 89.8°, A/B = 10, ν = 0.05</text>"#,
-        w / 2.0
+        r#"<text x="{}" y="28" font-size="20" text-anchor="middle">Cascade unlooping: {}</text>"#,
+        w / 2.0,
+        figure.title
     );
     for i in 0..=10 {
         let t = f64::from(i) / 10.0;
-        let f = t * MAX_FORCE_SCALED;
+        let f = t * max_force;
         let _ = writeln!(
             s,
             r##"<line x1="{:.3}" y1="{top}" x2="{:.3}" y2="{:.3}" stroke="#e6e6e6"/><text x="{:.3}" y="{:.3}" font-size="12" text-anchor="middle">{t:.1}</text>"##,
@@ -327,7 +440,7 @@ fn plot(
     );
     let polyline = |pts: &mut dyn Iterator<Item = (f64, f64)>, colour: &str, width: f64| {
         let mut d = String::new();
-        for (dz, f) in pts.filter(|p| p.1 <= MAX_FORCE_SCALED && p.1 >= 0.0) {
+        for (dz, f) in pts.filter(|p| p.1 <= max_force && p.1 >= 0.0) {
             let _ = write!(d, "{:.3},{:.3} ", x(dz), y(f));
         }
         format!(

@@ -50,9 +50,10 @@ pub fn run(args: &[String]) -> Result<(), String> {
     let (mut count, mut seed, mut given) = (0usize, 0x14c0_ffee_u64, Vec::new());
     let mut it = args.iter();
     while let Some(flag) = it.next() {
-        let value = it.next().ok_or_else(|| format!("{flag} needs a value"))?;
+        let mut value = || it.next().ok_or_else(|| format!("{flag} needs a value"));
         match flag.as_str() {
             "--random" => {
+                let value = value()?;
                 // each scene pulls the rod (seconds): a larger count is a
                 // typo, and its list would not fit in memory
                 count = value
@@ -61,13 +62,12 @@ pub fn run(args: &[String]) -> Result<(), String> {
                     .filter(|n| *n <= 100_000)
                     .ok_or_else(|| format!("--random {value}: a count of scenes up to 100000"))?;
             }
-            "--seed" => seed = value.parse().map_err(|_| format!("--seed {value}"))?,
-            "--scene" => given.push(crate::parse_scene(value)?),
-            other => {
-                return Err(format!(
-                    "unknown flag {other} (--random N, --seed S, --scene N,THETA0_DEG,A_OVER_B,NU)"
-                ));
+            "--seed" => {
+                let value = value()?;
+                seed = value.parse().map_err(|_| format!("--seed {value}"))?;
             }
+            "--scene" => given.push(crate::parse_scene(value()?)?),
+            other => return Err(crate::cli::unknown(other, crate::USAGE)),
         }
     }
     // scenes given replace the grid

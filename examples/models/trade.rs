@@ -166,7 +166,7 @@ pub fn run(args: &[String]) -> Result<(), String> {
     while let Some(flag) = it.next() {
         match flag.as_str() {
             "--out" => out = it.next().ok_or("--out needs a directory")?.into(),
-            other => return Err(format!("unknown flag {other} (--trade [--out DIR])")),
+            other => return Err(crate::cli::unknown(other, crate::USAGE)),
         }
     }
     // (before the minutes of pulls, not after)

@@ -126,18 +126,45 @@ use hockle::rod::{Fixed, Followed, NikolaiRod, PhaseDiagram, Rod};
 
 /// The committed diagram of n = 4.
 const N4: &str = include_str!("../../docs/data/phase_diagram_n4.csv");
-fn usage() -> String {
-    "usage: phase_diagram [--coils N] [--out DIR] [--compute | --extend CSV | --check] [--scene THETA0_DEG,A_OVER_B,NU]… [--pull F] [--stretch DZ] [--forces] [--force-map | --force-map-a-over-b] [--cross-check] [--fold-cusps] [--random K [--seed S]]".into()
-}
+
+const USAGE: &str = "\
+usage: cargo run --release --example phase_diagram -- [OPTIONS]
+  --coils N                      the spring's number of coils n (default 4)
+  --out DIR                      where a computed diagram's CSV and the diagram's SVG go
+                                 (default target/hockle)
+  --compute                      compute the diagram instead of reading the committed one
+  --extend CSV                   compute it from the lines of the diagram CSV computed before,
+                                 adding the seeded pop-outs' lines
+  --check                        the convergence checks of docs/ACCURACY.md instead
+  --scene THETA0_DEG,A_OVER_B,NU (repeatable) the scene's number of pop-outs read off the diagram
+  --pull F                       pull each scene too, to F/((2πn)²B) = F; with --random, the
+                                 force of its pulls (default 3)
+  --stretch DZ                   stretch each scene too, under extension control to Δz = DZ
+  --forces                       each scene's pop-out forces, the reference's carried there
+  --force-map                    the reference pop-outs' forces over (θ0, ν) at A/B = 10
+  --force-map-a-over-b           the same over (θ0, A/B) at ν = 0.05
+  --cross-check                  the diagram's count against pulls on a coarse grid of both planes
+  --fold-cusps                   each scene's pop-outs' folds followed in θ0 to their first cusps
+                                 (no diagram read)
+  --random K                     the diagram's count against pulls at K random scenes
+  --seed S                       the seed of --random's scenes (default 4242)
+  --help                         this text
+";
 
 #[path = "../support/exit.rs"]
 mod exit;
+
+#[path = "../support/cli.rs"]
+mod cli;
 
 fn main() -> std::process::ExitCode {
     exit::report("phase_diagram", run())
 }
 
 fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
+    if cli::help(USAGE) {
+        return Ok(());
+    }
     let mut out = std::env::var_os("CARGO_TARGET_DIR")
         .map_or_else(
             || PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target"),
@@ -231,7 +258,7 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
                 };
                 scenes.push((t, a, nu));
             }
-            other => return Err(format!("unknown argument {other}; {}", usage()).into()),
+            other => return Err(cli::unknown(other, USAGE).into()),
         }
     }
     if checks {
