@@ -64,7 +64,7 @@
 pub(crate) mod adapt;
 pub mod classic;
 mod collocation;
-mod guess;
+pub(crate) mod guess;
 mod mesh;
 mod newton;
 mod problem;

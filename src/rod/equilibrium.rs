@@ -31,7 +31,9 @@ pub struct Equilibrium {
 }
 
 impl Equilibrium {
-    /// Wraps a solution of `rod`'s problem.
+    /// Wraps a solution of `rod`'s problem; of a [symmetric](Rod::symmetric)
+    /// rod's, the whole rod's equilibrium: the half and its image (the
+    /// equilibrium's [`rod`](Self::rod) is then the whole rod).
     ///
     /// # Errors
     /// [`Error::InvalidCount`] if the solution is not of a 13-dimensional
@@ -49,6 +51,12 @@ impl Equilibrium {
                 name: "solution.parameters().len()",
                 value: solution.parameters().len() as u64,
                 allowed: "3, the rod's parameters (λ, Δz, θ0)",
+            });
+        }
+        if rod.is_symmetric() {
+            return Ok(Self {
+                rod: rod.whole(),
+                solution: super::symmetry::whole_solution(&solution)?,
             });
         }
         Ok(Self { rod, solution })

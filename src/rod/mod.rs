@@ -6,7 +6,7 @@
 //!
 //! | type | role |
 //! |---|---|
-//! | [`Rod`] | the problem: n coils, helix angle θ0, stiffnesses, [`Control`]; implements [`crate::bvp::Problem`] with analytic Jacobians |
+//! | [`Rod`] | the problem: n coils, helix angle θ0, stiffnesses, [`Control`]; implements [`crate::bvp::Problem`] with analytic Jacobians; [`Rod::symmetric`] solves its half, the other half the image under the midpoint's two-fold rotation |
 //! | [`Equilibrium`] | one solution with its outputs on demand (force, extension, frame, strains, energy, planarity, loop count, \|q\| drift) |
 //! | [`Pull`] | the driver: pseudo-arclength from rest to a [`crate::Target`] (force or extension), folds located; [`Start`] to drive it step by step |
 //! | [`PullRun`] | the curve in order, the located [`crate::Fold`]s, a loop count per point, the continuation's [`crate::continuation::Termination`] |
@@ -127,6 +127,7 @@ mod problem;
 mod pull;
 mod quat;
 mod stability;
+mod symmetry;
 
 use core::f64::consts::{FRAC_PI_2, PI};
 
@@ -170,6 +171,9 @@ pub struct Rod {
     /// u0 − 2πn (0, sin θ0, cos θ0): zero for a helical spring.
     strain_offset: Vector3<f64>,
     control: Control,
+    /// Solved on its half s ∈ [0, ½] ([`Rod::symmetric`]).
+    #[cfg_attr(feature = "serde", serde(default))]
+    half: bool,
 }
 
 impl Rod {
@@ -209,6 +213,7 @@ impl Rod {
             c: stiffness.c(),
             strain_offset: Vector3::zeros(),
             control: Control::Force,
+            half: false,
         })
     }
 
@@ -219,7 +224,8 @@ impl Rod {
     /// Newton's method.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] if a component is not finite.
+    /// [`Error::InvalidArgument`] if a component is not finite, or on a
+    /// [symmetric](Rod::symmetric) rod if u10 is not zero.
     pub fn with_intrinsic_strains(mut self, strains: Vector3<f64>) -> Result<Self> {
         for (name, v) in ["u10", "u20", "u30"].into_iter().zip(strains.iter()) {
             if !v.is_finite() {
@@ -231,6 +237,10 @@ impl Rod {
             }
         }
         self.strain_offset = strains - Self::helical_strains(self.coils, self.theta0);
+        if self.half {
+            // (a symmetric rod stays one only with u10 = 0)
+            return self.whole().symmetric();
+        }
         Ok(self)
     }
 
@@ -378,6 +388,10 @@ impl core::fmt::Display for Rod {
             self.b,
             self.c,
             self.control
-        )
+        )?;
+        if self.half {
+            write!(f, ", symmetric (solved on its half)")?;
+        }
+        Ok(())
     }
 }

@@ -4,7 +4,7 @@
 use nalgebra::{DMatrixViewMut, Matrix3, Vector3};
 
 use super::quat::{drot, half_q_times_u, l_matrix, rot};
-use super::{Control, Rod};
+use super::{Control, Rod, symmetry};
 use crate::bvp::Problem;
 
 /// Index of the first component of r, q, F, M in the state vector.
@@ -36,11 +36,11 @@ impl Problem for Rod {
     }
 
     fn boundary_count(&self) -> usize {
-        12
+        if self.half { 13 } else { 12 }
     }
 
     fn integral_count(&self) -> usize {
-        1
+        if self.half { 0 } else { 1 }
     }
 
     fn rhs(&self, _s: f64, y: &[f64], p: &[f64], f: &mut [f64]) {
@@ -52,6 +52,10 @@ impl Problem for Rod {
         let fv = Vector3::new(y[F], y[F + 1], y[F + 2]);
         let mp = fv.cross(&d3);
         f[M..M + 3].copy_from_slice(mp.as_slice());
+        if self.half {
+            // (σ = 2s on the half: d/dσ = ½ d/ds)
+            f[..Rod::DIM].iter_mut().for_each(|v| *v *= 0.5);
+        }
     }
 
     fn rhs_jacobian(
@@ -123,10 +127,17 @@ impl Problem for Rod {
                 dfdy[(M + i, Q + k)] = c[i];
             }
         }
+        if self.half {
+            dfdy *= 0.5;
+            dfdp *= 0.5;
+        }
         true
     }
 
     fn boundary(&self, y0: &[f64], y1: &[f64], p: &[f64], g: &mut [f64]) {
+        if self.half {
+            return symmetry::boundary(self, y0, y1, p, g);
+        }
         g[0] = y0[R];
         g[1] = y0[R + 1];
         g[2] = y0[R + 2];
@@ -148,12 +159,16 @@ impl Problem for Rod {
     fn boundary_jacobian(
         &self,
         y0: &[f64],
-        _y1: &[f64],
+        y1: &[f64],
         _p: &[f64],
         mut dg0: DMatrixViewMut<'_, f64>,
         mut dg1: DMatrixViewMut<'_, f64>,
         mut dgp: DMatrixViewMut<'_, f64>,
     ) -> bool {
+        if self.half {
+            symmetry::boundary_jacobian(self, y0, y1, dg0, dg1, dgp);
+            return true;
+        }
         dg0[(0, R)] = 1.0;
         dg0[(1, R + 1)] = 1.0;
         dg0[(2, R + 2)] = 1.0;

@@ -17,12 +17,21 @@ use super::{Model, Response, Spring};
 /// its mesh, degree and steps). The rod takes the spring's intrinsic
 /// strains as they are. The [`Response`] carries the run's estimated error
 /// ([`Response::estimated_error`]).
+///
+/// [`RodModel::symmetric`]`(true)` solves the rod on its half
+/// ([`Rod::symmetric`]) where its intrinsic strains allow (u10 = 0, every
+/// helix): the equilibria symmetric end to end, which the pull from rest
+/// follows on the whole rod too (the paper's branches are symmetric), at
+/// half the unknowns and without the antisymmetric modes that stall long
+/// springs and sliding loops.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct RodModel {
     tolerance: Option<f64>,
     intervals: Option<usize>,
     points: Option<usize>,
     relax_to: Option<f64>,
+    /// Solve the half where the rod allows ([`RodModel::symmetric`]).
+    symmetric: bool,
 }
 
 impl RodModel {
@@ -58,8 +67,22 @@ impl RodModel {
         self
     }
 
-    /// The rod of a spring: its coils, helix angle, stiffnesses and
-    /// intrinsic strains.
+    /// Whether to solve the rod on its half where its intrinsic strains
+    /// allow ([`Rod::symmetric`]), or the whole rod (the default). The
+    /// [`Response`] is the whole rod's either way; an observer given to
+    /// [`RodModel::pull_observed`] sees the continuation's points, whose
+    /// solutions are then on the half: turn one into the whole rod's
+    /// equilibrium with the driver's rod,
+    /// [`Equilibrium::new`](crate::rod::Equilibrium::new)`(*model.driver(spring, target)?.rod(), solution)`.
+    #[must_use]
+    pub fn symmetric(mut self, on: bool) -> Self {
+        self.symmetric = on;
+        self
+    }
+
+    /// The whole rod of a spring: its coils, helix angle, stiffnesses and
+    /// intrinsic strains ([`RodModel::driver`] solves it on its half where
+    /// it can).
     ///
     /// # Errors
     /// As [`Rod::new`] and [`Rod::with_intrinsic_strains`] (a valid
@@ -78,7 +101,13 @@ impl RodModel {
     /// # Errors
     /// As [`RodModel::rod`] and [`Pull::check`].
     pub fn driver(&self, spring: &Spring, target: Target) -> Result<Pull> {
-        let mut pull = Pull::new(Self::rod(spring)?, target);
+        let rod = Self::rod(spring)?;
+        let rod = if self.symmetric {
+            rod.symmetric().unwrap_or(rod)
+        } else {
+            rod
+        };
+        let mut pull = Pull::new(rod, target);
         if let Some(tol) = self.tolerance {
             pull = pull.tolerance(tol);
         }

@@ -70,9 +70,17 @@ fn rods() -> Vec<Rod> {
     ]
 }
 
+/// [`rods`] and the same rods solved on their halves (`Rod::symmetric`:
+/// ½ the right-hand side, the midpoint's conditions).
+fn all_rods() -> Vec<Rod> {
+    let whole = rods();
+    let halves: Vec<Rod> = whole.iter().map(|r| r.symmetric().unwrap()).collect();
+    whole.into_iter().chain(halves).collect()
+}
+
 #[test]
 fn rhs_jacobian_matches_central_differences() {
-    for rod in rods() {
+    for rod in all_rods() {
         let (n, np) = (rod.dim(), rod.parameter_count());
         for (y, _, p) in states(&rod) {
             let mut jy = DMatrix::zeros(n, n);
@@ -109,7 +117,7 @@ fn rhs_jacobian_matches_central_differences() {
 
 #[test]
 fn boundary_jacobian_matches_central_differences() {
-    for rod in rods() {
+    for rod in all_rods() {
         let (n, np, nb) = (rod.dim(), rod.parameter_count(), rod.boundary_count());
         for (y0, y1, p) in states(&rod) {
             let mut j0 = DMatrix::zeros(nb, n);

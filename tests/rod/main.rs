@@ -15,5 +15,6 @@ mod planar_guess;
 mod relax;
 mod slides;
 mod stability;
+mod symmetry;
 mod tolerance;
 mod unstressed;

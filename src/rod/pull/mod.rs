@@ -61,6 +61,14 @@ use crate::load::{Control, Target};
 /// Pulls a [`Rod`] from its rest state to a [`Target`] by pseudo-arclength
 /// continuation (module docs: [`crate::rod`]).
 ///
+/// A [symmetric](Rod::symmetric) rod is pulled on its half: the equilibria
+/// symmetric end to end, which the pull from rest follows on the whole rod
+/// too (the paper's spring: the same folds to 1e-7, in less than half the
+/// time), without the nearly free antisymmetric modes that stall the whole
+/// rod on long springs' unlooping plateaus and where loops slide
+/// (docs/ACCURACY.md, "Long springs"). Its mesh starts with half the
+/// intervals; the curve, folds and loop counts are the whole rod's.
+///
 /// ```no_run
 /// use hockle::rod::{Pull, Rod};
 /// use hockle::{Stiffness, Target};
@@ -343,8 +351,10 @@ impl Pull {
         self.intervals.unwrap_or_else(|| {
             let m = self.points_per_interval();
             let per_coil = 1.45 * self.tolerance.powf(-0.5 / m as f64);
-            let n = f64::from(self.rod.coils());
-            ((n * per_coil).ceil() as usize).max(START_INTERVALS_PER_COIL * n as usize)
+            // (a symmetric rod's problem is its half: n/2 coils)
+            let n = f64::from(self.rod.coils()) * if self.rod.is_symmetric() { 0.5 } else { 1.0 };
+            ((n * per_coil).ceil() as usize)
+                .max((START_INTERVALS_PER_COIL as f64 * n).ceil() as usize)
         })
     }
 
@@ -489,7 +499,7 @@ impl Pull {
         let scale = rod.scale().value();
         let mut p0 = rod.parameters_at_rest();
         let rest = relaxed_rest(&solver, &rod, &p0)?;
-        let rest_extension = rest.at_mesh(rest.mesh().intervals())[2];
+        let rest_extension = rod.extension_of(&rest);
         p0[Rod::EXTENSION] = rest_extension;
         let (param, theta, stop, from) = match self.target {
             Target::Force(f) => (Rod::FORCE, 1.0 / (scale * scale), f * scale, 0.0),
@@ -501,13 +511,14 @@ impl Pull {
         // the plane of the paper's plots: (F/((2πn)²B), Δz) under force
         // control, (Δz, F/((2πn)²B)) under extension control
         let (output, lambda_scale, output_scale) = match self.target {
+            // (Δz = 2 z(½) on a symmetric rod's half)
             Target::Force(_) => (
                 Output::EndValue {
                     component: 2,
                     right: true,
                 },
                 1.0 / scale,
-                1.0,
+                if rod.is_symmetric() { 2.0 } else { 1.0 },
             ),
             // the end force F_z = y₉(0) (the force is a state of the rod)
             Target::Extension(_) => (

@@ -19,6 +19,13 @@ pub struct Start {
 }
 
 impl Start {
+    /// The rod the continuation solves (with the target's control; a
+    /// [symmetric](Rod::symmetric) rod's points are solutions on its half).
+    #[must_use]
+    pub fn rod(&self) -> &Rod {
+        &self.rod
+    }
+
     /// The rest state.
     #[must_use]
     pub fn rest(&self) -> &Solution {
@@ -32,8 +39,8 @@ impl Start {
     }
 
     /// The continuation's step-by-step iterator from the rest state. Turn
-    /// a point into the rod's outputs with [`Equilibrium::new`](crate::rod::Equilibrium::new)`(rod,
-    /// point.solution().clone())`.
+    /// a point into the rod's outputs with [`Equilibrium::new`](crate::rod::Equilibrium::new)`(*start.rod(),
+    /// point.solution().clone())` (the whole rod's, for a symmetric rod too).
     ///
     /// # Errors
     /// An error of the first tangent computation.
@@ -55,7 +62,7 @@ pub(super) fn relaxed_rest(solver: &Collocation, rod: &Rod, p0: &[f64; 3]) -> Re
     let target = rod.intrinsic_strains();
     let mut rest = solver.solve(
         &free.with_intrinsic_strains(helical)?,
-        |s: f64| rod.unstressed(s),
+        |s: f64| rod.unstressed_at(s),
         p0,
     )?;
     if !rod.is_helical() {
