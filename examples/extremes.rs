@@ -4,7 +4,7 @@
 //! ```text
 //! cargo run --release --example extremes            # special, elastica
 //! cargo run --release --example extremes -- --rod   # the rod only (minutes)
-//! cargo run --release --example extremes -- --long-springs   # n = 12 … 40 (minutes)
+//! cargo run --release --example extremes -- --long-springs   # n = 12 … 40, whole and half (minutes)
 //! ```
 //!
 //! special: against the mpmath table `tests/data/special_extremes.csv`
@@ -27,7 +27,7 @@ use std::time::{Duration, Instant};
 
 use hockle::continuation::{Point, Termination};
 use hockle::elastica::{Branch, Elastica, Trace, secondary_fold};
-use hockle::rod::{Pull, PullRun, Rod};
+use hockle::rod::{Equilibrium, Pull, PullRun, Rod};
 use hockle::special::{Modulus, ellip_e, ellip_e_inc, ellip_f, ellip_k, jacobi};
 use hockle::spring::RodModel;
 use hockle::{Stiffness, Target};
@@ -364,9 +364,10 @@ fn rod() {
 }
 
 /// The paper's spring with many coils (n = 12 … 40) pulled to
-/// F/((2πn)²B) = 1 at five tolerances: where a long spring's pull reaches
-/// its load, and where it fails (docs/ACCURACY.md, "Long springs").
-fn long_springs() {
+/// F/((2πn)²B) = 1 at five tolerances, the whole rod or (`half`) its half
+/// (`Rod::symmetric`): where a long spring's pull reaches its load, and
+/// where it fails (docs/ACCURACY.md, "Long springs").
+fn long_springs(half: bool) {
     println!(
         "| n | tolerance | end | points | folds | Δz at the end | estimate | intervals (max) | time |"
     );
@@ -379,6 +380,11 @@ fn long_springs() {
                 Stiffness::nikolai(10.0, 0.05).expect("valid"),
             )
             .expect("valid");
+            let rod = if half {
+                rod.symmetric().expect("a helix is symmetric")
+            } else {
+                rod
+            };
             let run = match Pull::new(rod, Target::Force(1.0)).tolerance(tol).run(()) {
                 Ok(run) => run,
                 Err(e) => {
@@ -401,10 +407,66 @@ fn long_springs() {
     }
 }
 
+/// How far the whole rod's pulls of the long springs leave their symmetric
+/// branch (`--long-springs`, last table): n = 24, 32, 40 pulled as in
+/// [`long_springs`] at 1e-2, and at
+/// every point the largest |κ(s) − κ(1 − s)| over s = 0, 0.01, …, 0.5 (κ the
+/// curvature, the same at s and 1 − s on an equilibrium that the helix's
+/// two-fold rotation about its midpoint normal maps onto itself, as the rest
+/// state and the paper's elastica branches are). Prints every 50th point,
+/// the first beyond 1e-6 and the last.
+fn long_springs_symmetry() {
+    println!("| n | point | Δz | F/((2πn)²B) | max abs(κ(s) − κ(1 − s)) |");
+    println!("|---|---|---|---|---|");
+    for n in [24, 32, 40] {
+        let rod = Rod::new(
+            n,
+            89.8_f64.to_radians(),
+            Stiffness::nikolai(10.0, 0.05).expect("valid"),
+        )
+        .expect("valid");
+        let scale = rod.scale().value();
+        let mut rows: Vec<(f64, f64, f64)> = Vec::new();
+        let record = |p: &Point| {
+            let asymmetry = Equilibrium::new(rod, p.solution().clone()).map_or(f64::NAN, |e| {
+                (0..=50)
+                    .map(|i| {
+                        let s = f64::from(i) / 100.0;
+                        match (e.curvature(s), e.curvature(1.0 - s)) {
+                            (Ok(a), Ok(b)) => (a - b).abs(),
+                            _ => f64::NAN,
+                        }
+                    })
+                    .fold(0.0, f64::max)
+            });
+            rows.push((p.diagram()[1], p.parameter() / scale, asymmetry));
+            ControlFlow::Continue(())
+        };
+        let run = Pull::new(rod, Target::Force(1.0))
+            .tolerance(1e-2)
+            .run(record);
+        let first = rows.iter().position(|r| r.2 > 1e-6);
+        for (i, (dz, f, a)) in rows.iter().enumerate() {
+            if i % 50 == 0 || Some(i) == first || i + 1 == rows.len() {
+                let mark = if Some(i) == first {
+                    " (first > 1e-6)"
+                } else {
+                    ""
+                };
+                println!("| {n} | {i}{mark} | {dz:.6} | {f:.6} | {a:.1e} |");
+            }
+        }
+        match run {
+            Ok(run) => println!("| {n} | end: {} | | | |", termination(&run)),
+            Err(e) => println!("| {n} | end: {e} | | | |"),
+        }
+    }
+}
+
 const USAGE: &str = "\
 usage: cargo run --release --example extremes -- [OPTIONS]
   --rod            the rod's table only, instead of special's and elastica's (minutes)
-  --long-springs   the long springs' table only, n = 12 … 40 coils (minutes)
+  --long-springs   the long springs' tables only, n = 12 … 40 coils, the whole rod and its half (minutes)
   --help           this text
 ";
 
@@ -424,7 +486,12 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
     }
     cli::only_flags(&["--rod", "--long-springs"], USAGE)?;
     if std::env::args().any(|a| a == "--long-springs") {
-        long_springs();
+        println!("#### The whole rod\n");
+        long_springs(false);
+        println!("\n#### On its half (`Rod::symmetric`)\n");
+        long_springs(true);
+        println!("\n#### The whole rod's distance from the symmetric branch\n");
+        long_springs_symmetry();
         return Ok(());
     }
     if std::env::args().any(|a| a == "--rod") {

@@ -7,6 +7,7 @@
 //! cargo run --release --example tolerance_trade [-- --out DIR] [--repeat R] [--memory]
 //! cargo run --release --example tolerance_trade -- --one TOL
 //! cargo run --release --example tolerance_trade -- --folds SETTING [--repeat R]
+//! cargo run --release --example tolerance_trade -- --symmetric   # the runs on the rod's half
 //! ```
 //!
 //! Per run: user CPU seconds of the run alone (the process's `utime` from
@@ -243,6 +244,7 @@ usage: cargo run --release --example tolerance_trade -- [OPTIONS]
   --one TOL        one pull at tolerance TOL, printed, instead
   --folds SETTING  R pulls at SETTING (TOL, or N,M,TOL for a fixed mesh) and their folds,
                    machine-readably, instead
+  --symmetric      the runs solve the rod's half (Rod::symmetric); the references stay whole
   --help           this text
 ";
 
@@ -270,12 +272,14 @@ fn run() -> Result<(), Box<dyn Error>> {
     let mut memory = false;
     let mut one = None;
     let mut folds = None;
+    let mut symmetric = false;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {
             "--out" => out = PathBuf::from(args.next().ok_or("--out needs a directory")?),
             "--repeat" => repeat = args.next().ok_or("--repeat needs R")?.parse()?,
             "--memory" => memory = true,
+            "--symmetric" => symmetric = true,
             "--one" => one = Some(args.next().ok_or("--one needs TOL")?.parse::<f64>()?),
             "--folds" => {
                 folds = Some(parse_setting(
@@ -288,18 +292,23 @@ fn run() -> Result<(), Box<dyn Error>> {
     if repeat == 0 {
         return Err("--repeat needs R ≥ 1".into());
     }
+    // the references are the whole rod's; with --symmetric the timed runs
+    // solve its half
     let rod = paper_rod()?;
+    let pulled = if symmetric { rod.symmetric()? } else { rod };
     if let Some(setting) = folds {
-        return print_folds(setting, rod, repeat);
+        return print_folds(setting, pulled, repeat);
     }
     if let Some(tol) = one {
-        let run = Pull::new(rod, Target::Force(3.0)).tolerance(tol).run(())?;
+        let run = Pull::new(pulled, Target::Force(3.0))
+            .tolerance(tol)
+            .run(())?;
         println!("{run}");
         return Ok(());
     }
     if memory {
         let before = peak_memory();
-        let run = Pull::new(rod, Target::Force(3.0)).run(())?;
+        let run = Pull::new(pulled, Target::Force(3.0)).run(())?;
         println!("{run}");
         println!(
             "peak resident memory before the pull: {before}; after one default pull: {}",
@@ -346,6 +355,11 @@ fn run() -> Result<(), Box<dyn Error>> {
         curve_error(&check, &reference)
     );
     print!("{reference}");
+    if symmetric {
+        println!(
+            "the runs below solve the rod's half (Rod::symmetric; N counts the half's intervals)"
+        );
+    }
 
     let settings: Vec<Setting> = TOLERANCES
         .iter()
@@ -375,7 +389,7 @@ fn run() -> Result<(), Box<dyn Error>> {
     );
     let mut rows = Vec::new();
     for &setting in &settings {
-        let (run, [user, cpu, wall]) = timed(setting, rod, repeat)?;
+        let (run, [user, cpu, wall]) = timed(setting, pulled, repeat)?;
         let e = run.estimate();
         let row = Row {
             setting,

@@ -3,8 +3,11 @@
 //!
 //! ```text
 //! cargo run --release --example unlooping [-- --out DIR] [--tolerance TOL] [--intervals N] [--no-contact]
-//!                                         [--spring N,THETA0_DEG,A_OVER_B,NU] [--to F] [--help]
+//!                                         [--spring N,THETA0_DEG,A_OVER_B,NU] [--to F] [--whole] [--help]
 //! ```
+//!
+//! The rod is solved on its half (`RodModel::symmetric`), the paper's
+//! symmetric branches; `--whole` solves the whole rod (the same curve).
 //!
 //! `--spring` pulls another spring (C by the Nikolai equality, as the
 //! paper's), `--to` to another F/((2πn)²B).
@@ -43,8 +46,9 @@ usage: cargo run --release --example unlooping -- [OPTIONS]
   --spring N,THETA0_DEG,A_OVER_B,NU  the spring (default the paper's: 4,89.8,10,0.05; C by the Nikolai equality)
   --to F                             pull to F/((2πn)²B) = F (default 3)
   --tolerance TOL                    accuracy of the curve and its folds in (Δz, F/((2πn)²B)) (default 1e-6)
-  --intervals N                      a fixed mesh of N intervals instead of the adaptive one
+  --intervals N                      a fixed mesh of N intervals instead of the adaptive one (on the half: 2N on the rod)
   --no-contact                       skip the self-contact check
+  --whole                            solve the whole rod, not its half (Rod::symmetric: the same curve, twice the unknowns)
   --out DIR                          where unlooping.csv and unlooping.svg go (default target/hockle)
   --help                             this text
 ";
@@ -66,7 +70,9 @@ fn run() -> Result<(), Box<dyn Error>> {
             PathBuf::from,
         )
         .join("hockle");
-    let mut model = RodModel::default();
+    // (the half: the equilibria symmetric end to end, which the pull
+    // follows on the whole rod too, at half the cost)
+    let mut model = RodModel::default().symmetric(true);
     let mut tolerance = Pull::DEFAULT_TOLERANCE;
     let mut contact = true;
     let mut scene = Scene::paper();
@@ -88,6 +94,7 @@ fn run() -> Result<(), Box<dyn Error>> {
                 model = model.tolerance(tolerance);
             }
             "--no-contact" => contact = false,
+            "--whole" => model = model.symmetric(false),
             "--spring" => {
                 scene = Scene::parse(
                     &args

@@ -41,6 +41,10 @@
 //! and the curve's estimated error: a cross-check of the diagram, which
 //! counts the pop-outs that exist at any force (docs/ACCURACY.md: at
 //! negative ν the maximum-force folds rise far above the reference's).
+//! `--symmetric` solves every pull's and stretch's rod on its half
+//! (`Rod::symmetric`: the equilibria symmetric end to end, without the
+//! antisymmetric modes along which loops slide).
+//!
 //! `--stretch DZ` stretches each `--scene` from rest under extension
 //! control to Δz = DZ instead (at most 2000 steps) and prints
 //! `stretched pop_outs=<count> to=<DZ> reached=<bool> past_pop_outs=<bool>
@@ -140,6 +144,7 @@ usage: cargo run --release --example phase_diagram -- [OPTIONS]
   --pull F                       pull each scene too, to F/((2πn)²B) = F; with --random, the
                                  force of its pulls (default 3)
   --stretch DZ                   stretch each scene too, under extension control to Δz = DZ
+  --symmetric                    pulls and stretches solve the rod on its half (Rod::symmetric)
   --forces                       each scene's pop-out forces, the reference's carried there
   --force-map                    the reference pop-outs' forces over (θ0, ν) at A/B = 10
   --force-map-a-over-b           the same over (θ0, A/B) at ν = 0.05
@@ -196,6 +201,7 @@ fn run() -> Result<(), Box<dyn Error + Send + Sync>> {
                         .ok_or(format!("--pull {v}: a finite positive force F/((2πn)²B)"))?,
                 );
             }
+            "--symmetric" => pulls::SYMMETRIC.store(true, std::sync::atomic::Ordering::Relaxed),
             "--stretch" => {
                 let v = args.next().ok_or("--stretch needs an extension Δz")?;
                 stretch_to = Some(

@@ -2,6 +2,7 @@
 //! diagram, `--pull` and the pull every check shares.
 
 use std::error::Error;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use hockle::Stiffness;
 use hockle::load::Target;
@@ -139,7 +140,9 @@ fn ran(
     relax_to: Option<f64>,
 ) -> Result<Ran, Box<dyn Error + Send + Sync>> {
     let spring = Spring::from_degrees(coils, t, Stiffness::nikolai(a, nu)?)?;
-    let mut model = RodModel::default().tolerance(tolerance);
+    let mut model = RodModel::default()
+        .tolerance(tolerance)
+        .symmetric(SYMMETRIC.load(Ordering::Relaxed));
     if let Some(loosest) = relax_to {
         model = model.relax_to(loosest);
     }
@@ -158,6 +161,12 @@ fn ran(
         relaxed_to,
     })
 }
+
+/// `--symmetric`: every pull and stretch solves the rod on its half
+/// ([`RodModel::symmetric`]: the equilibria symmetric end to end, without
+/// the antisymmetric modes along which loops slide); set by `main` before
+/// any run.
+pub(crate) static SYMMETRIC: AtomicBool = AtomicBool::new(false);
 
 /// The rod's default tolerance, at which every pull and stretch runs first.
 const TOLERANCE: f64 = Pull::DEFAULT_TOLERANCE;

@@ -202,7 +202,9 @@ impl Pull {
     }
 
     /// Expert override: a fixed uniform mesh of `n` intervals (no
-    /// adaptation; the error is still measured and reported).
+    /// adaptation; the error is still measured and reported). On a
+    /// [symmetric](Rod::symmetric) rod they cover its half: the whole rod's
+    /// equilibrium has 2n.
     #[must_use]
     pub fn intervals(mut self, n: usize) -> Self {
         self.intervals = Some(n);
