@@ -201,6 +201,7 @@ pub(crate) fn finish<P: Problem + ?Sized>(
         residual_norm: r.max_norm(),
         error_estimate: f64::NAN,
         newton,
+        boundaries: Some(sys.nbc),
     };
     sol.error_estimate = sol.estimate_error();
     Ok(sol)

@@ -44,6 +44,10 @@ pub struct Solution {
     pub(crate) residual_norm: f64,
     pub(crate) error_estimate: f64,
     pub(crate) newton: NewtonStats,
+    /// The number of boundary conditions of the problem it solves (`None`
+    /// for an interpolant): what tells a symmetric rod's half from the
+    /// whole rod's solution, both with 13 unknowns.
+    pub(crate) boundaries: Option<usize>,
 }
 
 impl Solution {
@@ -216,6 +220,7 @@ impl Solution {
             residual_norm: f64::NAN,
             error_estimate: f64::NAN,
             newton: NewtonStats::default(),
+            boundaries: None,
         }
     }
 

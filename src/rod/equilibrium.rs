@@ -37,7 +37,9 @@ impl Equilibrium {
     ///
     /// # Errors
     /// [`Error::InvalidCount`] if the solution is not of a 13-dimensional
-    /// problem with the rod's 3 parameters.
+    /// problem with the rod's 3 parameters, or solves a problem with other
+    /// boundary conditions (a symmetric rod's half given the whole rod, or
+    /// the other way round).
     pub fn new(rod: Rod, solution: Solution) -> Result<Self> {
         if solution.dim() != Rod::DIM {
             return Err(Error::InvalidCount {
@@ -51,6 +53,19 @@ impl Equilibrium {
                 name: "solution.parameters().len()",
                 value: solution.parameters().len() as u64,
                 allowed: "3, the rod's parameters (λ, Δz, θ0)",
+            });
+        }
+        // a symmetric rod's half and the whole rod both have 13 unknowns;
+        // their boundary conditions tell them apart (an interpolant does not
+        // say)
+        if let Some(b) = solution.boundaries
+            && b != crate::bvp::Problem::boundary_count(&rod)
+        {
+            return Err(Error::InvalidCount {
+                name: "the solution's boundary conditions",
+                value: b as u64,
+                allowed: "the rod's: 12 for the whole rod, 13 for a symmetric rod's half \
+                          (a half's solution needs the symmetric rod, `Rod::symmetric`)",
             });
         }
         if rod.is_symmetric() {

@@ -36,7 +36,11 @@ impl Problem for Rod {
     }
 
     fn boundary_count(&self) -> usize {
-        if self.half { 13 } else { 12 }
+        if self.half {
+            symmetry::HALF_BOUNDARIES
+        } else {
+            symmetry::WHOLE_BOUNDARIES
+        }
     }
 
     fn integral_count(&self) -> usize {

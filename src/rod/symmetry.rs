@@ -37,6 +37,13 @@ use crate::bvp::{Mesh, Solution};
 use crate::error::{Error, Result};
 use crate::load::Control;
 
+/// Boundary conditions of the whole rod (the half has one more: the
+/// midpoint's five fixed-point conditions for the far end's four and the
+/// phase condition's integral).
+pub(super) const WHOLE_BOUNDARIES: usize = 12;
+/// Boundary conditions of the half.
+pub(super) const HALF_BOUNDARIES: usize = 13;
+
 /// Index of the first component of r, q, F, M in the state vector.
 const R: usize = 0;
 const Q: usize = 3;
@@ -203,5 +210,7 @@ pub(super) fn whole_solution(half: &Solution) -> Result<Solution> {
         }
     };
     let state = state_from_guess(&guess, &mesh, &half.tab, Rod::DIM, half.parameters());
-    Ok(Solution::interpolant(&state, &mesh, &half.tab, Rod::DIM))
+    let mut whole = Solution::interpolant(&state, &mesh, &half.tab, Rod::DIM);
+    whole.boundaries = Some(WHOLE_BOUNDARIES);
+    Ok(whole)
 }

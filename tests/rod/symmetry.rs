@@ -191,3 +191,26 @@ fn only_a_rod_without_u10_is_symmetric() {
     assert!(half.symmetric().unwrap().is_symmetric());
     assert!(format!("{half}").contains("symmetric"));
 }
+
+/// A half's solution and the whole rod's both have 13 unknowns and three
+/// parameters; what they solve differs, and `Equilibrium::new` says so
+/// instead of reading a half as the whole rod (Δz half the truth).
+#[test]
+fn a_half_solution_needs_the_symmetric_rod() {
+    let rod = paper_with(4);
+    let half = rod.symmetric().unwrap();
+    let on_half = Pull::new(half, Target::Force(1.0)).start().unwrap();
+    let on_whole = Pull::new(rod, Target::Force(1.0)).start().unwrap();
+    for (r, sol) in [(rod, on_half.rest()), (half, on_whole.rest())] {
+        assert!(matches!(
+            Equilibrium::new(r, sol.clone()),
+            Err(Error::InvalidCount { .. })
+        ));
+    }
+    let whole = Equilibrium::new(half, on_half.rest().clone()).unwrap();
+    let direct = Equilibrium::new(rod, on_whole.rest().clone()).unwrap();
+    // the rest helix both ways: Δz = cos θ0 to the solves' rounding
+    assert!((whole.extension() - direct.extension()).abs() <= 1e-14);
+    // the image is the whole rod's solution: accepted as one
+    assert!(Equilibrium::new(rod, whole.solution().clone()).is_ok());
+}
