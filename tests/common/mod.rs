@@ -164,3 +164,19 @@ pub fn troesch_mu10_error(sol: &hockle::bvp::Solution, table: &[[f64; 3]]) -> f6
         })
         .fold(0.0, f64::max)
 }
+
+/// Each fold of `run` within `bound` of the same fold of `other` in
+/// (Δz, F/((2πn)²B)), max norm; as many folds, of the same kinds.
+pub fn assert_same_folds(run: &hockle::rod::PullRun, other: &hockle::rod::PullRun, bound: f64) {
+    assert_eq!(run.folds().len(), other.folds().len(), "{run}\n{other}");
+    let scale = run.curve().force_scale();
+    for (a, b) in run.folds().iter().zip(other.folds()) {
+        assert_eq!(a.kind, b.kind);
+        let df = (a.point.force - b.point.force).abs() / scale;
+        let dz = (a.point.extension - b.point.extension).abs();
+        assert!(
+            df.max(dz) <= bound,
+            "{a:?} against {b:?}: {df:e}, {dz:e} > {bound:e}"
+        );
+    }
+}

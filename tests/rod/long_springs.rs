@@ -9,6 +9,8 @@
 use hockle::rod::{Pull, PullRun, Rod};
 use hockle::{Stiffness, Target};
 
+use crate::common::assert_same_folds;
+
 /// The paper's spring (θ0 = 89.8°, A/B = 10, ν = 0.05) with `n` coils.
 fn paper_with(n: u32) -> Rod {
     Rod::new(
@@ -26,20 +28,6 @@ fn pull(n: u32, tol: f64) -> PullRun {
         .unwrap()
 }
 
-/// Each fold of `run` within `bound` of the same fold of `other` in
-/// (Δz, F/((2πn)²B)), max norm.
-fn assert_folds_within(run: &PullRun, other: &PullRun, bound: f64) {
-    let scale = run.curve().force_scale();
-    for (a, b) in run.folds().iter().zip(other.folds()) {
-        let df = (a.point.force - b.point.force).abs() / scale;
-        let dz = (a.point.extension - b.point.extension).abs();
-        assert!(
-            df.max(dz) <= bound,
-            "{a:?} against {b:?}: {df:e}, {dz:e} > {bound:e}"
-        );
-    }
-}
-
 /// n = 24 at tolerance 1e-2 failed after two of its eight folds when the
 /// corrector stopped at corrections of 1e-6 (1e-4 times the tolerance):
 /// near the plateau's folds such points took it ten iterations and the
@@ -55,7 +43,7 @@ fn a_long_spring_at_a_loose_tolerance_reaches_its_load() {
     // each run's estimate bounds its fold errors (tests/rod/tolerance.rs),
     // so two runs' folds lie within the sum of the estimates
     let apart = loose.estimate().overall() + tight.estimate().overall();
-    assert_folds_within(&loose, &tight, apart);
+    assert_same_folds(&loose, &tight, apart);
 }
 
 /// n = 32 at tolerance 3e-3: a fold on the plateau whose location did not
@@ -97,5 +85,5 @@ fn a_mesh_check_stalled_on_sliding_loops_gives_a_finite_estimate() {
         .run(())
         .unwrap();
     assert_eq!(run.folds().len(), tight.folds().len(), "{run}\n{tight}");
-    assert_folds_within(&run, &tight, estimate);
+    assert_same_folds(&run, &tight, estimate);
 }
