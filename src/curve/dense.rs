@@ -383,6 +383,17 @@ impl ForceExtension {
         })
     }
 
+    /// Every τ ∈ [0, 1] at which the interpolant of segment `i` has the
+    /// force (`force_axis`) or the extension `v`, in increasing order; none
+    /// past the last segment.
+    pub(crate) fn crossings_on(&self, i: usize, v: f64, force_axis: bool) -> Vec<f64> {
+        if i + 1 >= self.points.len() || !v.is_finite() {
+            return Vec::new();
+        }
+        let (x, f) = self.segment(i);
+        if force_axis { f.solve(v) } else { x.solve(v) }
+    }
+
     /// Every point of the interpolant where `axis(point) = v`, in curve
     /// order, as (extension, force).
     fn crossings(&self, v: f64, force_axis: bool) -> Vec<(f64, f64)> {

@@ -33,7 +33,9 @@ pub struct Jump {
     /// The last stable curve point before it leaves (in the direction of
     /// travel).
     pub from_index: usize,
-    /// Where it lands (interpolated on the curve, same controlled value).
+    /// Where it lands: on the curve's dense output (the Hermite
+    /// interpolant of the points, good to the run's tolerance), at the
+    /// same controlled value.
     pub to: ForcePoint,
     /// The first stable curve point at or past the landing point (in the
     /// direction of travel).
@@ -108,7 +110,7 @@ impl Response {
                 direction: Direction::Loading,
                 from,
                 from_index: i,
-                to: interpolate(&pts[j - 1], &pts[j], level, value),
+                to: self.landing(j - 1, level, control, Direction::Loading),
                 to_index: j,
             });
             i = j;
@@ -135,12 +137,40 @@ impl Response {
                 direction: Direction::Unloading,
                 from,
                 from_index: i,
-                to: interpolate(&pts[j - 1], &pts[j], level, value),
+                to: self.landing(j - 1, level, control, Direction::Unloading),
                 to_index: j - 1,
             });
             i = j - 1;
         }
         jumps
+    }
+}
+
+impl Response {
+    /// Where a jump lands on segment `i` (points i, i + 1) at the
+    /// controlled value `level`: on the curve's dense output (module docs
+    /// of [`crate::curve`]), the first crossing in the direction of travel,
+    /// with the controlled coordinate exactly `level`; linearly between the
+    /// points where the interpolant does not cross it.
+    fn landing(&self, i: usize, level: f64, control: Control, direction: Direction) -> ForcePoint {
+        let curve = self.curve();
+        let roots = curve.crossings_on(i, level, control == Control::Force);
+        let tau = match direction {
+            Direction::Loading => roots.first(),
+            Direction::Unloading => roots.last(),
+        };
+        let pts = curve.points();
+        let mut to = tau.and_then(|&t| curve.at(i, t)).unwrap_or_else(|| {
+            interpolate(&pts[i], &pts[i + 1], level, |p| match control {
+                Control::Force => p.force,
+                Control::Extension => p.extension,
+            })
+        });
+        match control {
+            Control::Force => to.force = level,
+            Control::Extension => to.extension = level,
+        }
+        to
     }
 }
 

@@ -149,7 +149,7 @@ fn extension_control_holds_pop_out_one_but_not_two_and_three() {
     assert_eq!(loading.len(), 2, "{jumps:?}");
     for j in &jumps {
         assert!(labels[j.from_index].is_stable() && labels[j.to_index].is_stable());
-        // linear interpolation on the landing segment meets Δz exactly
+        // the landing is placed at the controlled value exactly
         assert!((j.to.extension - j.from.extension).abs() < 1e-12, "{j:?}");
     }
 }

@@ -87,3 +87,76 @@ fn scaffold_holds_the_primary_and_the_secondary_upsilon_branches() {
         "{labels:?}"
     );
 }
+
+/// The rod model solved on the rod's half (`RodModel::symmetric`) answers
+/// the paper's spring as the whole rod does, a second model of the same
+/// equilibria (the half's image against the whole rod with its phase
+/// condition): the same pop-outs, their folds within the sum of the two
+/// estimates (each bounds its own fold errors, tests/rod/tolerance.rs), the
+/// same loops lost, as many jumps under either control, leaving and landing
+/// within that sum of the other curve, and the same first contact of the
+/// paper's strip (none).
+#[test]
+fn the_rod_on_its_half_answers_as_the_whole_rod() {
+    use hockle::Control;
+    use hockle::spring::{RodModel, Target};
+    let spring = Spring::paper().with_strip_width(1e-4).unwrap();
+    let model = RodModel::default().tolerance(1e-5);
+    let whole = model.pull(&spring, 3.0).unwrap();
+    let half = model
+        .symmetric(true)
+        .pull_with_contact(&spring, Target::Force(3.0), ())
+        .unwrap();
+    assert!(whole.reached_target() && half.reached_target(), "{half}");
+    let bound = whole.estimated_error().unwrap() + half.estimated_error().unwrap();
+    let scale = whole.curve().scale();
+    let near = |a: &hockle::ForcePoint, b: &hockle::ForcePoint| {
+        (a.extension - b.extension)
+            .abs()
+            .max((a.force_scaled(scale) - b.force_scaled(scale)).abs())
+    };
+    let (pw, ph) = (whole.pop_outs(), half.pop_outs());
+    assert_eq!(pw.len(), 3);
+    assert_eq!(pw.len(), ph.len());
+    for (a, b) in pw.iter().zip(&ph) {
+        assert!(near(&a.max.point, &b.max.point) <= bound, "{a:?} {b:?}");
+        assert!(near(&a.min.point, &b.min.point) <= bound, "{a:?} {b:?}");
+    }
+    assert_eq!(whole.loops_lost(), half.loops_lost());
+    for control in [Control::Force, Control::Extension] {
+        let (jw, jh) = (whole.jumps(control), half.jumps(control));
+        assert_eq!(jw.len(), jh.len(), "under {control}");
+        for (a, b) in jw.iter().zip(&jh) {
+            // under force control a jump leaves at a located maximum-force
+            // fold: the two runs' within the bound
+            if control == Control::Force {
+                assert!(near(&a.from, &b.from) <= bound, "{a:?} {b:?}");
+            }
+            // where it lands (on the run's dense output at the controlled
+            // value, on another branch) lies on the whole rod's curve: at
+            // that value the curve passes within the bound of it. (Where a
+            // jump leaves under extension control is the last stable point
+            // before a turning point of Δz, a curve point of a
+            // force-controlled pull, not compared: near the turning point
+            // the force at a given Δz is ill-conditioned.)
+            let p = b.to;
+            let off = match control {
+                Control::Force => whole
+                    .curve()
+                    .extension_at(p.force)
+                    .iter()
+                    .map(|z| (z - p.extension).abs())
+                    .fold(f64::INFINITY, f64::min),
+                Control::Extension => whole
+                    .curve()
+                    .force_at(p.extension)
+                    .iter()
+                    .map(|f| (f - p.force).abs() / scale.value())
+                    .fold(f64::INFINITY, f64::min),
+            };
+            assert!(off <= bound, "{a:?} {b:?}: {off:e}");
+        }
+    }
+    assert_eq!(half.first_contact(), None);
+    assert!(half.closest_approach().iter().all(Option::is_some));
+}
