@@ -33,7 +33,7 @@ const EVERY: usize = 2;
 /// (5 of the 414), all within 7e-4 of it. Why: the discrete rod's folds lie
 /// O(h²) from the collocation's, and next to a fold the eigenvalue that
 /// changes sign there is within that error of zero. 5e-3 leaves a factor 7.
-const NEAR_FOLD: f64 = 5e-3;
+pub(crate) const NEAR_FOLD: f64 = 5e-3;
 
 struct Paper {
     response: hockle::spring::Response,

@@ -5,12 +5,16 @@
 //! model: twice the unknowns, the phase condition instead of the midpoint's
 //! conditions).
 
+use std::ops::ControlFlow;
+
 use hockle::bvp::Collocation;
-use hockle::continuation::PointKind;
+use hockle::continuation::{Point, PointKind};
 use hockle::nalgebra::Vector3;
 use hockle::rod::{Equilibrium, Pull, Rod};
+use hockle::spring::{RodModel, Spring};
 use hockle::{Control, Error, Stiffness, Target};
 
+use super::stability::NEAR_FOLD;
 use crate::common::assert_same_folds;
 
 /// The paper's spring (θ0 = 89.8°, A/B = 10, ν = 0.05) with `n` coils.
@@ -208,4 +212,60 @@ fn a_half_solution_needs_the_symmetric_rod() {
     assert!((whole.extension() - direct.extension()).abs() <= 1e-14);
     // the image is the whole rod's solution: accepted as one
     assert!(Equilibrium::new(rod, whole.solution().clone()).is_ok());
+}
+
+/// The stability of the rod's half: the index carried along the symmetric
+/// curve through its folds (`Response::stability`, which sees only the
+/// half's folds) against the whole rod's direct test at the image of every
+/// fourth point (`Equilibrium::stability`: every perturbation of the whole
+/// rod, the antisymmetric ones included). On the paper's spring they agree
+/// away from the folds (`NEAR_FOLD`, as for the whole rod's curve,
+/// tests/rod/stability.rs): no symmetry-breaking instability goes unseen
+/// along the path the half follows.
+#[test]
+fn the_half_carries_the_whole_rods_stability() {
+    let spring = Spring::paper();
+    let model = RodModel::default().symmetric(true);
+    let rod = *model.driver(&spring, Target::Force(3.0)).unwrap().rod();
+    assert!(rod.is_symmetric());
+    let (mut samples, mut index) = (Vec::new(), 0usize);
+    let response = model
+        .pull_observed(&spring, Target::Force(3.0), |p: &Point| {
+            if p.kind() != PointKind::Fold {
+                if index.is_multiple_of(4) {
+                    samples.push((index, p.solution().clone()));
+                }
+                index += 1;
+            }
+            ControlFlow::Continue(())
+        })
+        .unwrap();
+    assert!(response.reached_target(), "{response}");
+    let scale = response.curve().force_scale();
+    let near_fold = |i: usize| {
+        let q = response.curve().points()[i];
+        response.folds().iter().any(|f| {
+            (f.point.extension - q.extension).hypot((f.point.force - q.force) / scale) < NEAR_FOLD
+        })
+    };
+    let (mut compared, mut unstable) = ([0usize; 2], [0usize; 2]);
+    for (i, sol) in &samples {
+        if near_fold(*i) {
+            continue;
+        }
+        let eq = Equilibrium::new(rod, sol.clone()).unwrap();
+        for (c, control) in [Control::Force, Control::Extension].into_iter().enumerate() {
+            let direct = eq.stability(control).unwrap();
+            assert_eq!(
+                direct,
+                response.stability(control)[*i],
+                "point {i} under {control}"
+            );
+            compared[c] += 1;
+            unstable[c] += usize::from(!direct.is_stable());
+        }
+    }
+    eprintln!("compared {compared:?}, of them unstable {unstable:?}");
+    assert!(compared.iter().all(|&n| n > 30), "{compared:?}");
+    assert!(unstable.iter().all(|&n| n >= 2), "{unstable:?}");
 }
