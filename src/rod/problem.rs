@@ -8,10 +8,10 @@ use super::{Control, Rod, symmetry};
 use crate::bvp::Problem;
 
 /// Index of the first component of r, q, F, M in the state vector.
-const R: usize = 0;
-const Q: usize = 3;
-const F: usize = 7;
-const M: usize = 10;
+pub(super) const R: usize = 0;
+pub(super) const Q: usize = 3;
+pub(super) const F: usize = 7;
+pub(super) const M: usize = 10;
 
 impl Rod {
     /// The material strains u = D⁻¹ Rᵀ M + u0(θ0) and the pieces needed to

@@ -31,6 +31,7 @@
 use nalgebra::DMatrixViewMut;
 
 use super::Rod;
+use super::problem::{F, M, Q, R};
 use super::quat::{drot, rot};
 use crate::bvp::guess::state_from_guess;
 use crate::bvp::{Mesh, Solution};
@@ -43,12 +44,6 @@ use crate::load::Control;
 pub(super) const WHOLE_BOUNDARIES: usize = 12;
 /// Boundary conditions of the half.
 pub(super) const HALF_BOUNDARIES: usize = 13;
-
-/// Index of the first component of r, q, F, M in the state vector.
-const R: usize = 0;
-const Q: usize = 3;
-const F: usize = 7;
-const M: usize = 10;
 
 impl Rod {
     /// The same rod solved on its half s ∈ [0, ½], the other half its image
