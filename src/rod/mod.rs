@@ -334,7 +334,9 @@ impl Rod {
 
     /// The exact unstressed helix at arclength s (the module docs give the
     /// formulas): an exact solution of the ODE and of every boundary and
-    /// phase condition at [`Rod::parameters_at_rest`].
+    /// phase condition at [`Rod::parameters_at_rest`]. For a
+    /// [symmetric](Rod::symmetric) rod it is still the whole rod's helix at
+    /// s; its half's problem has it at σ = 2s.
     ///
     /// ```
     /// use hockle::rod::Rod;
