@@ -73,10 +73,7 @@ impl Response {
         let labels = self.stability(control);
         let pts = self.curve().points();
         let n = pts.len();
-        let value = |p: &ForcePoint| match control {
-            Control::Force => p.force,
-            Control::Extension => p.extension,
-        };
+        let value = |p: &ForcePoint| controlled(control, p);
         let stable = |i: usize| labels[i].is_stable();
         let (max_kind, min_kind) = match control {
             Control::Force => (FoldKind::MaxForce, FoldKind::MinForce),
@@ -161,16 +158,21 @@ impl Response {
         };
         let pts = curve.points();
         let mut to = tau.and_then(|&t| curve.at(i, t)).unwrap_or_else(|| {
-            interpolate(&pts[i], &pts[i + 1], level, |p| match control {
-                Control::Force => p.force,
-                Control::Extension => p.extension,
-            })
+            interpolate(&pts[i], &pts[i + 1], level, |p| controlled(control, p))
         });
         match control {
             Control::Force => to.force = level,
             Control::Extension => to.extension = level,
         }
         to
+    }
+}
+
+/// The quantity `control` prescribes at `p`: its force or its extension.
+fn controlled(control: Control, p: &ForcePoint) -> f64 {
+    match control {
+        Control::Force => p.force,
+        Control::Extension => p.extension,
     }
 }
 
